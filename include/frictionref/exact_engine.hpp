@@ -1,0 +1,124 @@
+// The exact, event-driven engine (docs/theory.md).
+//
+// Each phase is integrated in closed form (closed_form.hpp). A slip ends at
+// the first zero of v after its start; v is monotone between the closed-form
+// times where B sin(w t) = +-R, so each such piece holds at most one zero and
+// a sign test at its end brackets it exactly. The zero is found with GSL's
+// Brent solver (double) or Boost.Math TOMS 748 (other scalar types) and
+// polished in the wider work type. Breakaway times are closed form. No time
+// stepping and no tolerance-dependent event detection.
+//
+// The engine is a stream: next() produces one phase at a time, so memory does
+// not grow with the horizon.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "frictionref/model.hpp"
+#include "frictionref/phase.hpp"
+#include "frictionref/types.hpp"
+
+namespace frictionref {
+
+struct SolveOptions {
+  // Stop with Termination::phase_limit after this many phases; >= 1.
+  std::uint64_t max_phases = std::numeric_limits<std::uint64_t>::max();
+
+  // Throws InvalidInput naming the field and the rule.
+  void validate() const;
+};
+
+template <class Real>
+struct BasicSummary {
+  Termination termination = Termination::reached_end;
+  std::string message;  // why it terminated, in words
+
+  std::uint64_t phases = 0;
+  std::array<std::uint64_t, 3> phases_by_kind{};  // indexed by PhaseKind
+  std::uint64_t stops = 0;            // slips that ended with v = 0 (before the horizon)
+  std::uint64_t reversals = 0;        // stops followed at once by a slip the other way
+  std::uint64_t breakaways = 0;       // sticks that ended in a slip
+  std::uint64_t merged_sticks = 0;    // sticks shorter than the time resolution, not emitted
+  std::uint64_t sign_tests = 0;       // velocity evaluations at piece ends (bracketing)
+  std::uint64_t root_function_calls = 0;  // velocity evaluations inside root finding
+
+  BasicState<Real> final_state;  // at the last phase end (t_end unless terminated early)
+
+  std::uint64_t count(PhaseKind kind) const { return phases_by_kind[static_cast<int>(kind)]; }
+  // One line: termination, counts, root-function calls per stop, final state.
+  std::string brief_report() const;
+};
+
+template <class Real>
+class BasicExactEngine {
+ public:
+  using Work = work_t<Real>;
+
+  // Validates model, t_end (finite, > t0) and options; throws InvalidInput.
+  BasicExactEngine(const BasicModel<Real>& model, const Real& t_end,
+                   const SolveOptions& options = {});
+
+  // Writes the next phase and returns true, or returns false once the horizon
+  // (or the phase limit) has been reached. The last phase is cut at t_end.
+  bool next(BasicPhase<Real>& phase);
+
+  const BasicModel<Real>& model() const { return model_; }
+  const Real& t_end() const { return t_end_; }
+  const BasicSummary<Real>& summary() const { return summary_; }
+
+ private:
+  enum class Mode { stick, slip };
+
+  void start_at_rest(const Work& tau, const Work& x);
+  void emit(BasicPhase<Real>& phase, PhaseKind kind, const Work& tau_end, const Work& x_end,
+            const Work& v_end, bool at_horizon);
+  // Earliest zero of s*v in (tau_, tau_limit]; returns false if there is none.
+  bool find_slip_end(const Work& tau_limit, Work& tau_stop);
+  Real to_time(const Work& tau) const;
+
+  BasicModel<Real> model_;
+  Real t_end_;
+  SolveOptions options_;
+  BasicSummary<Real> summary_;
+
+  Work omega_, b_, r_;  // b = B/(m w), r = R/(m w)
+  Work tau_end_;
+  Real t_current_;      // user time of tau_ as emitted (t0 exactly at the start)
+  Work tau_, x_, v_;    // current phase start
+  Mode mode_ = Mode::stick;
+  int sign_ = 0;        // slip direction when mode_ == slip
+  bool done_ = false;
+};
+
+template <class Real>
+struct BasicSolution {
+  BasicModel<Real> model;
+  std::vector<BasicPhase<Real>> phases;
+  BasicSummary<Real> summary;
+
+  // The phase containing t (t_begin <= t < t_end; the last phase also owns its
+  // t_end). Requires model.t0 <= t <= the horizon.
+  const BasicPhase<Real>& phase_at(const Real& t) const;
+  BasicState<Real> state_at(const Real& t) const;
+};
+
+// Runs the engine to t_end and keeps every phase.
+template <class Real>
+BasicSolution<Real> solve(const BasicModel<Real>& model, const Real& t_end,
+                          const SolveOptions& options = {});
+
+using ExactEngine = BasicExactEngine<double>;
+using Summary = BasicSummary<double>;
+using Solution = BasicSolution<double>;
+
+extern template class BasicExactEngine<double>;
+extern template struct BasicSummary<double>;
+extern template struct BasicSolution<double>;
+extern template BasicSolution<double> solve(const BasicModel<double>&, const double&,
+                                            const SolveOptions&);
+
+}  // namespace frictionref

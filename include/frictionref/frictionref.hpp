@@ -1,0 +1,12 @@
+// Everything public in one include.
+#pragma once
+
+#include "frictionref/closed_form.hpp"
+#include "frictionref/error.hpp"
+#include "frictionref/exact_engine.hpp"
+#include "frictionref/model.hpp"
+#include "frictionref/phase.hpp"
+#include "frictionref/sampling.hpp"
+#include "frictionref/steady_state.hpp"
+#include "frictionref/types.hpp"
+#include "frictionref/version.hpp"

@@ -1,0 +1,55 @@
+// Dense output: the exact state on a uniform grid or at given times,
+// produced as a stream on top of the engine (memory flat for any horizon).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "frictionref/exact_engine.hpp"
+#include "frictionref/model.hpp"
+#include "frictionref/phase.hpp"
+
+namespace frictionref {
+
+struct GridOptions {
+  double t_end = 1;             // last time (user units); finite, > model.t0
+  double dt = 0.01;             // grid step (user units); finite, > 0, and t0 + dt != t0
+  bool include_events = false;  // also emit a row at every phase boundary (kinks kept in plots)
+
+  // Throws InvalidInput naming the field and the rule.
+  void validate(double t0) const;
+  // Rows of the plain grid: t0, t0 + dt, ... below t_end, and t_end itself
+  // (without event rows). Saturates at UINT64_MAX.
+  std::uint64_t grid_rows(double t0) const;
+};
+
+// Rows at t_i = t0 + i dt (computed from i, never accumulated) while
+// t_i < t_end - 1e-9 dt, then t_end itself; with include_events also at every
+// phase boundary. A time on both lists appears once. At a phase boundary the
+// row carries the new phase and its acceleration (right limit); the row at
+// t_end carries the last phase.
+class UniformSampler {
+ public:
+  UniformSampler(const Model& model, const GridOptions& options);
+  bool next(State& state);
+  const Summary& engine_summary() const { return engine_.summary(); }
+
+ private:
+  double grid_time(std::uint64_t i) const;
+  bool advance_to(double t);  // moves phase_ until t_begin <= t <= t_end
+
+  Model model_;
+  GridOptions options_;
+  ExactEngine engine_;
+  Phase phase_;
+  bool have_phase_ = false;
+  bool phase_start_emitted_ = false;
+  std::uint64_t index_ = 0;
+  bool finished_ = false;
+};
+
+// The exact state at each of `times` (non-decreasing, within [t0, t_end]).
+// Throws InvalidInput otherwise.
+std::vector<State> sample_at(const Model& model, const std::vector<double>& times);
+
+}  // namespace frictionref
