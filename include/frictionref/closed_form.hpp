@@ -56,6 +56,7 @@ class PhaseLaw {
 
   int sign() const { return s_; }
   const Work& tau_begin() const { return tau_a_; }
+  const Work& cos_begin() const { return cos_a_; }
 
   Work velocity(const Work& tau) const {
     if (s_ == 0) return Work(0);

@@ -43,6 +43,7 @@ struct BasicSummary {
   std::uint64_t reversals = 0;        // stops followed at once by a slip the other way
   std::uint64_t breakaways = 0;       // sticks that ended in a slip
   std::uint64_t merged_sticks = 0;    // sticks shorter than the time resolution, not emitted
+  std::uint64_t touches = 0;          // v = 0 at an instant, slip goes on the same way (grazing)
   std::uint64_t sign_tests = 0;       // velocity evaluations at piece ends (bracketing)
   std::uint64_t root_function_calls = 0;  // velocity evaluations inside root finding
 
@@ -73,12 +74,15 @@ class BasicExactEngine {
  private:
   enum class Mode { stick, slip };
 
-  void start_at_rest(const Work& tau, const Work& x);
-  void emit(BasicPhase<Real>& phase, PhaseKind kind, const Work& tau_end, const Work& x_end,
+  // At v = 0 at forcing phase tau: returns the slip direction (+1/-1) if the
+  // force beats friction (or a breakaway is within the time resolution), 0 to stick.
+  int direction_at_rest(const Work& tau, bool& merged) const;
+  // Earliest stop of the current slip in (tau_, tau_end_]; false if none.
+  // On a stop, `direction` is what follows it (direction_at_rest).
+  bool find_slip_end(Work& tau_stop, int& direction);
+  // Fills `phase` unless it is shorter than the resolution of Real.
+  bool emit(BasicPhase<Real>& phase, PhaseKind kind, const Work& tau_end, const Work& x_end,
             const Work& v_end, bool at_horizon);
-  // Earliest zero of s*v in (tau_, tau_limit]; returns false if there is none.
-  bool find_slip_end(const Work& tau_limit, Work& tau_stop);
-  Real to_time(const Work& tau) const;
 
   BasicModel<Real> model_;
   Real t_end_;
@@ -86,6 +90,8 @@ class BasicExactEngine {
   BasicSummary<Real> summary_;
 
   Work omega_, b_, r_;  // b = B/(m w), r = R/(m w)
+  bool crosses_ = false;  // lambda < 1: the force crosses +-R and breakaways exist
+  Work alpha_ = 0;        // asin(lambda) when crosses_
   Work tau_end_;
   Real t_current_;      // user time of tau_ as emitted (t0 exactly at the start)
   Work tau_, x_, v_;    // current phase start

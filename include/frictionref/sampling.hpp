@@ -37,13 +37,13 @@ class UniformSampler {
  private:
   double grid_time(std::uint64_t i) const;
   bool advance_to(double t);  // moves phase_ until t_begin <= t <= t_end
+  bool finish();              // marks the stream finished; returns false
 
   Model model_;
   GridOptions options_;
   ExactEngine engine_;
   Phase phase_;
   bool have_phase_ = false;
-  bool phase_start_emitted_ = false;
   std::uint64_t index_ = 0;
   bool finished_ = false;
 };

@@ -1,0 +1,34 @@
+#include "bracketed_root.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+#include <cfloat>
+#include <memory>
+
+#include "gsl_errors.hpp"
+
+namespace frictionref::detail {
+
+bool gsl_brent(double (*f)(double, void*), void* params, double lo, double hi, double& root,
+               std::uint64_t& calls) {
+  (void)calls;  // counted inside f
+  disable_gsl_abort_handler();
+  // Allocated per call: the solver state is a few words and this keeps the
+  // engine free of shared mutable state (engines may run in parallel).
+  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  if (!solver) return false;
+  gsl_function function{f, params};
+  if (gsl_root_fsolver_set(solver.get(), &function, lo, hi) != GSL_SUCCESS) return false;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    if (gsl_root_fsolver_iterate(solver.get()) != GSL_SUCCESS) return false;
+    const double x_lo = gsl_root_fsolver_x_lower(solver.get());
+    const double x_hi = gsl_root_fsolver_x_upper(solver.get());
+    root = gsl_root_fsolver_root(solver.get());
+    if (gsl_root_test_interval(x_lo, x_hi, 4 * DBL_EPSILON, 4 * DBL_EPSILON) != GSL_CONTINUE) return true;
+  }
+  return true;  // 100 Brent steps: the bracket is closed to far below double resolution anyway
+}
+
+}  // namespace frictionref::detail

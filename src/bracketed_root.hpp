@@ -1,0 +1,106 @@
+// The zero of a strictly decreasing function on a bracket [lo, hi] with
+// f(lo) > 0 >= f(hi): the end of a slip inside one monotone piece.
+//
+// long double (the work type of the double engine): GSL's Brent solver
+// brings the bracket to double resolution, then a safeguarded Newton polish
+// in long double (it keeps a sign bracket and bisects whenever a Newton step
+// would leave it) reaches long double resolution, so event times chained over
+// long horizons stay accurate to the rounding of t.
+// Other types (Boost.Multiprecision): Boost.Math TOMS 748 to full precision.
+//
+// Tolerances are relative to the time scale, as in SUNDIALS cvRootfind:
+// the bracket is closed to a few ulps of max(1, |tau|) of the work type.
+#pragma once
+
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace frictionref::detail {
+
+// GSL Brent on [lo, hi] (f(lo), f(hi) of opposite signs, checked by the
+// caller). Returns false if GSL reports an error; `root` is then unchanged.
+bool gsl_brent(double (*f)(double, void*), void* params, double lo, double hi, double& root,
+               std::uint64_t& calls);
+
+template <class Work>
+struct RootBracket {
+  Work root;  // the best estimate, inside [lo, hi]
+  Work lo;    // f(lo) > 0
+  Work hi;    // f(hi) <= 0
+  bool ok = true;
+};
+
+template <class Work, class F, class DF>
+RootBracket<Work> decreasing_root(const F& f, const DF& slope, Work lo, Work hi,
+                                  std::uint64_t& calls) {
+  // Generic path: TOMS 748 (Alefeld, Potra, Shi 1995) to the type's precision.
+  RootBracket<Work> result{lo, lo, hi, true};
+  std::uintmax_t max_iter = 400;
+  const auto counted = [&](const Work& x) {
+    ++calls;
+    return f(x);
+  };
+  boost::math::tools::eps_tolerance<Work> tol(std::numeric_limits<Work>::digits - 2);
+  const auto bracket = boost::math::tools::toms748_solve(counted, lo, hi, tol, max_iter);
+  (void)slope;
+  result.lo = bracket.first;
+  result.hi = bracket.second;
+  result.root = f(bracket.second) <= 0 ? bracket.second : bracket.first;
+  ++calls;
+  result.ok = max_iter < 400;
+  return result;
+}
+
+template <class F, class DF>
+RootBracket<long double> decreasing_root(const F& f, const DF& slope, long double lo,
+                                         long double hi, std::uint64_t& calls) {
+  RootBracket<long double> result{lo, lo, hi, true};
+
+  // Stage 1: GSL Brent in double. The bracket ends are rounded to double;
+  // if rounding loses the sign change (a root within a double ulp of an end),
+  // stage 2 starts from the long double bracket directly.
+  struct Params {
+    const F* f;
+    std::uint64_t* calls;
+  } params{&f, &calls};
+  const auto f_double = [](double x, void* p) -> double {
+    auto* q = static_cast<Params*>(p);
+    ++*q->calls;
+    return static_cast<double>((*q->f)(static_cast<long double>(x)));
+  };
+  const double lo_d = static_cast<double>(lo);
+  const double hi_d = static_cast<double>(hi);
+  long double x = lo + (hi - lo) / 2;
+  if (lo_d < hi_d && lo_d >= lo && hi_d <= hi) {
+    double root_d = 0;
+    if (gsl_brent(+f_double, &params, lo_d, hi_d, root_d, calls)) x = root_d;
+  }
+
+  // Stage 2: safeguarded Newton in long double.
+  const long double eps = std::numeric_limits<long double>::epsilon();
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    ++calls;
+    const long double fx = f(x);
+    if (fx > 0) {
+      result.lo = x;
+    } else {
+      result.hi = x;
+      if (fx == 0) break;
+    }
+    const long double width = result.hi - result.lo;
+    if (width <= 2 * eps * std::fmax(1.0L, std::fabs(x))) break;
+    const long double d = slope(x);
+    long double next = d < 0 ? x - fx / d : result.lo + width / 2;
+    if (!(next > result.lo && next < result.hi)) next = result.lo + width / 2;
+    // A Newton step smaller than the resolution: test the neighbour across
+    // the root instead, which closes the bracket next iteration.
+    if (next == x) next = fx > 0 ? std::nextafter(x, result.hi) : std::nextafter(x, result.lo);
+    x = next;
+  }
+  result.root = result.hi;
+  return result;
+}
+
+}  // namespace frictionref::detail

@@ -1,0 +1,78 @@
+// The options every model-based command shares (--mass ... --t0), and the
+// translation of the library's InvalidInput into a message naming the option
+// as the user typed it.
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+
+#include "cli_error.hpp"
+#include "frictionref/error.hpp"
+#include "frictionref/model.hpp"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
+namespace frictionref::cli {
+
+// A number exactly as typed on the command line, with the option that carried it.
+struct TypedNumber {
+  std::string option;  // "--mass"
+  std::string text;    // "-1"
+};
+
+// Library field name (InvalidInput::parameter(): "mass", "t_end", "dt", ...)
+// -> the option and text the user typed for it.
+using TypedInputs = std::map<std::string, TypedNumber>;
+
+// The whole text as a double, correctly rounded (strtod). CLI11 converts via
+// strtold and then to double, and that double rounding breaks the round trip of
+// numbers we print ourselves (e.g. 1.678986648677672 comes back one ulp off),
+// so numeric options are bound as text and converted here.
+// Throws bad input "--mass = abc: must be a number".
+double parse_number(const TypedNumber& number);
+
+// "--mass = -1: must be > 0": the library's rule with the option and the text
+// the user typed (the library's own field name and value if it was not typed).
+CliError to_bad_input(const InvalidInput& error, const TypedInputs& inputs);
+
+// Calls f(); an InvalidInput it throws becomes bad input naming the option.
+template <class F>
+decltype(auto) naming_options(const TypedInputs& inputs, F&& f) {
+  try {
+    return std::forward<F>(f)();
+  } catch (const InvalidInput& error) {
+    throw to_bad_input(error, inputs);
+  }
+}
+
+// --mass --amplitude --omega (--friction | --lambda) --x0 --v0 --t0, bound as
+// text. Register once per command with add_to(); the object must outlive parsing.
+class ModelOptions {
+ public:
+  void add_to(CLI::App& command);
+
+  // The model, parsed and validated; throws bad input naming the option.
+  Model model() const;
+  // The typed model options by library field name (friction -> --lambda if given).
+  TypedInputs typed_inputs() const;
+
+ private:
+  bool lambda_given() const;
+
+  std::string mass_ = "1";
+  std::string amplitude_ = "1";
+  std::string omega_ = "1";
+  std::string friction_;
+  std::string lambda_;
+  std::string x0_ = "0";
+  std::string v0_ = "0";
+  std::string t0_ = "0";
+  CLI::Option* friction_option_ = nullptr;
+  CLI::Option* lambda_option_ = nullptr;
+};
+
+}  // namespace frictionref::cli

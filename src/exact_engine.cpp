@@ -1,0 +1,16 @@
+// The double instantiation of the exact engine (work type long double).
+#include "exact_engine_impl.hpp"
+
+namespace frictionref {
+
+void SolveOptions::validate() const {
+  if (max_phases < 1) throw InvalidInput("max_phases", std::to_string(max_phases), "must be >= 1");
+}
+
+template class BasicExactEngine<double>;
+template struct BasicSummary<double>;
+template struct BasicSolution<double>;
+template BasicSolution<double> solve(const BasicModel<double>&, const double&,
+                                     const SolveOptions&);
+
+}  // namespace frictionref

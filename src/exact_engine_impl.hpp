@@ -1,0 +1,304 @@
+// Definitions of the exact engine templates; instantiated for double in
+// exact_engine.cpp and for HighPrecision in exact_engine_multiprecision.cpp.
+#pragma once
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "bracketed_root.hpp"
+#include "force_crossings.hpp"
+#include "frictionref/closed_form.hpp"
+#include "frictionref/error.hpp"
+#include "frictionref/exact_engine.hpp"
+
+namespace frictionref {
+namespace detail {
+
+template <class T>
+std::string to_text(const T& value) {
+  std::ostringstream text;
+  text.precision(std::numeric_limits<T>::max_digits10);
+  text << value;
+  return text.str();
+}
+
+// Phases shorter than this (8 ulps of the output type at the time scale
+// max(1, |tau|)) cannot be told apart from zero length in the output: a stick
+// that short is merged into the slip around it, as at a grazing stop.
+template <class Real, class Work>
+Work time_resolution(const Work& tau) {
+  using std::fabs;
+  const Work scale = fabs(tau) > Work(1) ? Work(fabs(tau)) : Work(1);
+  return Work(8) * Work(std::numeric_limits<Real>::epsilon()) * scale;
+}
+
+}  // namespace detail
+
+template <class Real>
+std::string BasicSummary<Real>::brief_report() const {
+  std::ostringstream text;
+  text.precision(std::numeric_limits<Real>::max_digits10);
+  text << "termination=" << to_string(termination) << " phases=" << phases
+       << " stick=" << count(PhaseKind::stick) << " slip+=" << count(PhaseKind::slip_forward)
+       << " slip-=" << count(PhaseKind::slip_backward) << " stops=" << stops
+       << " reversals=" << reversals << " breakaways=" << breakaways
+       << " merged_sticks=" << merged_sticks << " touches=" << touches << " sign_tests=" << sign_tests
+       << " root_function_calls=" << root_function_calls << " t=" << final_state.t
+       << " x=" << final_state.x << " v=" << final_state.v;
+  return text.str();
+}
+
+template <class Real>
+BasicExactEngine<Real>::BasicExactEngine(const BasicModel<Real>& model, const Real& t_end,
+                                         const SolveOptions& options)
+    : model_(model), t_end_(t_end), options_(options) {
+  using std::isfinite;
+  model.validate();
+  options.validate();
+  if (!isfinite(t_end)) throw InvalidInput("t_end", detail::to_text(t_end), "must be a finite number");
+  if (!(t_end > model.t0))
+    throw InvalidInput("t_end", detail::to_text(t_end),
+                       "must be > t0 = " + detail::to_text(model.t0));
+
+  omega_ = Work(model.omega);
+  b_ = Work(model.amplitude) / (Work(model.mass) * omega_);
+  r_ = Work(model.friction) / (Work(model.mass) * omega_);
+  const detail::ForceCrossings<Work> crossings(b_, r_);
+  crosses_ = crossings.crosses();
+  alpha_ = crossings.alpha();
+
+  tau_ = omega_ * Work(model.t0);
+  tau_end_ = omega_ * Work(t_end);
+  if (!(tau_end_ > tau_))
+    throw InvalidInput("t_end", detail::to_text(t_end),
+                       "must exceed t0 by more than the resolution of w t");
+  t_current_ = model.t0;
+  x_ = Work(model.x0);
+  v_ = Work(model.v0);
+  bool merged = false;
+  sign_ = model.v0 > 0 ? 1 : model.v0 < 0 ? -1 : direction_at_rest(tau_, merged);
+  summary_.merged_sticks += merged;
+  mode_ = sign_ != 0 ? Mode::slip : Mode::stick;
+  summary_.final_state = {model.t0, model.x0, model.v0, 0, PhaseKind::stick};
+}
+
+template <class Real>
+int BasicExactEngine<Real>::direction_at_rest(const Work& tau, bool& merged) const {
+  using std::sin;
+  const Work force = b_ * sin(tau);  // velocity units, like r_
+  if (force > r_) return 1;
+  if (force < -r_) return -1;
+  if (!crosses_) return 0;
+  // |F| <= R: stuck, unless a breakaway is closer than the time resolution
+  // (a start exactly at a breakaway time, or a grazing stop): then the stick
+  // would have zero length and the slip starts now.
+  const Work resolution = detail::time_resolution<Real>(tau);
+  int direction = 0;
+  const Work breakaway =
+      detail::ForceCrossings<Work>(crosses_, alpha_).next_breakaway(tau - resolution, direction);
+  merged = breakaway - tau <= resolution;
+  return merged ? direction : 0;
+}
+
+template <class Real>
+bool BasicExactEngine<Real>::find_slip_end(Work& tau_stop, int& direction) {
+  using std::fabs;
+  const int s = sign_;
+  const PhaseLaw<Work> law(model_, s > 0 ? PhaseKind::slip_forward : PhaseKind::slip_backward,
+                           tau_, x_, v_);
+  const auto speed = [&law](const Work& tau) { return law.speed_along_slip(tau); };
+  const auto slope = [&law](const Work& tau) { return law.speed_slope(tau); };
+  const Work resolution = detail::time_resolution<Real>(tau_);
+
+  // s v(tau) >= s v_a + s b cos a - b - r (tau - a): no stop before `lower`
+  // (and none ever when r = 0 and the bound is positive).
+  const Work reach_lower = Work(s) * (v_ + b_ * law.cos_begin()) - b_;
+  const Work reach_upper = Work(s) * (v_ + b_ * law.cos_begin()) + b_;
+  if (r_ == 0 && reach_lower > 0) return false;
+
+  Work piece_begin = tau_;
+  if (!crosses_) {
+    // lambda >= 1 or B = 0: s v is monotone (non-increasing); the stop lies
+    // before tau_a + reach_upper / r, where the upper envelope reaches zero.
+    if (r_ == 0) return false;  // B = R = 0: constant velocity
+    Work bound = tau_ + reach_upper / r_;
+    bound += resolution + fabs(bound) * Work(std::numeric_limits<Work>::epsilon()) * 4;
+    const bool horizon = bound >= tau_end_;
+    const Work piece_end = horizon ? tau_end_ : bound;
+    ++summary_.sign_tests;
+    const Work end_speed = speed(piece_end);
+    if (end_speed > 0) {
+      assert(horizon && "the closed-form upper bound of a monotone slip must bracket its stop");
+      return false;
+    }
+    if (end_speed == 0) {
+      tau_stop = piece_end;
+      direction = 0;
+      return true;
+    }
+    tau_stop = detail::decreasing_root<Work>(speed, slope, piece_begin, piece_end,
+                                             summary_.root_function_calls)
+                   .root;
+    direction = 0;  // nothing breaks away when lambda >= 1
+    return true;
+  }
+
+  // lambda < 1: split at the critical times; s v is monotone on each piece.
+  // A slip that starts at rest starts where the force has just beaten
+  // friction, so s v rises first: skip a critical time within the resolution.
+  Work search_from = tau_ + resolution;
+  if (r_ > 0 && reach_lower > 0) {
+    piece_begin = tau_ + reach_lower / r_ * (1 - 64 * std::numeric_limits<Real>::epsilon());
+    search_from = piece_begin;
+  }
+  const detail::ForceCrossings<Work> crossings(crosses_, alpha_);
+  for (;;) {
+    if (piece_begin >= tau_end_) return false;
+    const Work critical = crossings.next_critical(s, search_from);
+    const bool horizon = critical >= tau_end_;
+    const Work piece_end = horizon ? tau_end_ : critical;
+    ++summary_.sign_tests;
+    const Work end_speed = speed(piece_end);
+    if (end_speed <= 0) {
+      Work stop = piece_end;
+      if (end_speed < 0)
+        stop = detail::decreasing_root<Work>(speed, slope, piece_begin, piece_end,
+                                             summary_.root_function_calls)
+                   .root;
+      // v = 0 where the slip goes on in the same direction: a touch at a
+      // minimum of s v (a breakaway time in direction s). Not a stop.
+      bool merged = false;
+      const int next = direction_at_rest(stop, merged);
+      if (next == s && !horizon) {
+        ++summary_.touches;
+        piece_begin = critical;
+        search_from = critical + resolution;
+        continue;
+      }
+      summary_.merged_sticks += merged;
+      tau_stop = stop;
+      direction = next;
+      return true;
+    }
+    if (horizon) return false;
+    piece_begin = piece_end;
+    search_from = piece_end;
+  }
+}
+
+template <class Real>
+bool BasicExactEngine<Real>::emit(BasicPhase<Real>& phase, PhaseKind kind, const Work& tau_end,
+                                  const Work& x_end, const Work& v_end, bool at_horizon) {
+  const Real t_end = at_horizon ? t_end_ : Real(tau_end / omega_);
+  if (!(t_end > t_current_)) return false;  // shorter than the output resolution
+  phase.kind = kind;
+  phase.t_begin = t_current_;
+  phase.t_end = t_end;
+  phase.x_begin = Real(x_);
+  phase.x_end = Real(x_end);
+  phase.v_begin = Real(v_);
+  phase.v_end = Real(v_end);
+  t_current_ = t_end;
+  ++summary_.phases;
+  ++summary_.phases_by_kind[static_cast<int>(kind)];
+  const PhaseLaw<Work> law(model_, kind, tau_, x_, v_);
+  summary_.final_state = {phase.t_end, phase.x_end, phase.v_end, Real(law.acceleration(tau_end)),
+                          kind};
+  return true;
+}
+
+template <class Real>
+bool BasicExactEngine<Real>::next(BasicPhase<Real>& phase) {
+  while (!done_) {
+    if (summary_.phases >= options_.max_phases) {
+      done_ = true;
+      summary_.termination = Termination::phase_limit;
+      summary_.message = "stopped after max_phases = " + std::to_string(options_.max_phases) +
+                         " phases, before t_end";
+      return false;
+    }
+    if (mode_ == Mode::stick) {
+      int direction = 0;
+      Work breakaway = tau_end_;
+      bool breaks = false;
+      if (crosses_) {
+        breakaway = detail::ForceCrossings<Work>(crosses_, alpha_).next_breakaway(tau_, direction);
+        breaks = breakaway < tau_end_;
+      }
+      const Work end = breaks ? breakaway : tau_end_;
+      const bool emitted = emit(phase, PhaseKind::stick, end, x_, Work(0), !breaks);
+      if (breaks) {
+        ++summary_.breakaways;
+        mode_ = Mode::slip;
+        sign_ = direction;
+        tau_ = breakaway;
+        v_ = 0;
+      } else {
+        done_ = true;
+      }
+      if (emitted) return true;
+      continue;
+    }
+
+    const PhaseKind kind = sign_ > 0 ? PhaseKind::slip_forward : PhaseKind::slip_backward;
+    Work tau_stop = tau_end_;
+    int next = 0;
+    const bool stops = find_slip_end(tau_stop, next);
+    const PhaseLaw<Work> law(model_, kind, tau_, x_, v_);
+    const Work end = stops ? tau_stop : tau_end_;
+    const Work x_end = law.position(end);
+    const Work v_end = stops ? Work(0) : law.velocity(end);
+    const bool at_horizon = !stops || tau_stop >= tau_end_;
+    const bool emitted = emit(phase, kind, end, x_end, v_end, at_horizon);
+    if (at_horizon) {
+      done_ = true;
+    } else {
+      ++summary_.stops;
+      if (next == -sign_) ++summary_.reversals;
+      mode_ = next != 0 ? Mode::slip : Mode::stick;
+      sign_ = next;
+      tau_ = tau_stop;
+      x_ = x_end;
+      v_ = 0;
+    }
+    if (emitted) return true;
+  }
+  if (summary_.termination == Termination::reached_end && summary_.message.empty())
+    summary_.message = "reached t_end";
+  return false;
+}
+
+template <class Real>
+const BasicPhase<Real>& BasicSolution<Real>::phase_at(const Real& t) const {
+  if (phases.empty() || !(t >= phases.front().t_begin) || !(t <= phases.back().t_end))
+    throw InvalidInput("t", detail::to_text(t), "must lie within [t0, t_end] of the solution");
+  // First phase whose t_end > t; the last phase also owns its t_end.
+  auto it = std::upper_bound(phases.begin(), phases.end(), t,
+                             [](const Real& value, const BasicPhase<Real>& p) {
+                               return value < p.t_end;
+                             });
+  if (it == phases.end()) --it;
+  return *it;
+}
+
+template <class Real>
+BasicState<Real> BasicSolution<Real>::state_at(const Real& t) const {
+  return evaluate(model, phase_at(t), t);
+}
+
+template <class Real>
+BasicSolution<Real> solve(const BasicModel<Real>& model, const Real& t_end,
+                          const SolveOptions& options) {
+  BasicExactEngine<Real> engine(model, t_end, options);
+  BasicSolution<Real> solution;
+  solution.model = model;
+  BasicPhase<Real> phase;
+  while (engine.next(phase)) solution.phases.push_back(phase);
+  solution.summary = engine.summary();
+  return solution;
+}
+
+}  // namespace frictionref

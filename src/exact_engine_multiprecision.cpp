@@ -1,0 +1,13 @@
+// The 50-digit instantiation: the same engine code, TOMS 748 for the roots.
+#include "exact_engine_impl.hpp"
+#include "frictionref/multiprecision.hpp"
+
+namespace frictionref {
+
+template class BasicExactEngine<HighPrecision>;
+template struct BasicSummary<HighPrecision>;
+template struct BasicSolution<HighPrecision>;
+template BasicSolution<HighPrecision> solve(const BasicModel<HighPrecision>&,
+                                            const HighPrecision&, const SolveOptions&);
+
+}  // namespace frictionref

@@ -1,0 +1,80 @@
+// Where the force B sin(tau) crosses +-R, in closed form (docs/theory.md section 3).
+//
+// These times do two jobs: they split a slip into pieces on which the velocity
+// is monotone (so each piece holds at most one stop, bracketed by a sign test),
+// and they are the breakaway times that end a stick.
+//
+// With lambda = R / B < 1 and alpha = asin(lambda):
+//   forward breakaway   alpha + 2 pi k        (sin tau rises through +lambda)
+//   backward breakaway  pi + alpha + 2 pi k   (sin tau falls through -lambda)
+// For a slip of sign s, d(s v)/d tau = s b sin tau - r vanishes where
+// sin tau = s lambda: minima of s*v at the breakaway times in direction s,
+// maxima half a period of the force minus 2 alpha later, at
+// pi - alpha + 2 pi k (s = +1) and 2 pi - alpha + 2 pi k (s = -1).
+// With lambda >= 1 (or B = 0) s*v is monotone and nothing ever breaks away.
+#pragma once
+
+#include <boost/math/constants/constants.hpp>
+#include <cmath>
+
+namespace frictionref::detail {
+
+template <class Work>
+class ForceCrossings {
+ public:
+  // b = B / (m w) >= 0, r = R / (m w) >= 0, velocity units.
+  ForceCrossings(const Work& b, const Work& r) : crosses_(b > 0 && r < b) {
+    using std::asin;
+    if (crosses_) alpha_ = asin(r / b);
+  }
+  // Rebuilt from a stored alpha (the engine keeps alpha, not this object,
+  // so its public header does not depend on this private one).
+  ForceCrossings(bool crosses, const Work& alpha) : crosses_(crosses), alpha_(alpha) {}
+
+  const Work& alpha() const { return alpha_; }
+
+  // True when lambda < 1: breakaways exist and slips have critical times.
+  bool crosses() const { return crosses_; }
+
+  // The earliest breakaway time >= tau (exact grid: base + 2 pi k).
+  // Sets `direction` to +1 or -1. Requires crosses().
+  Work next_breakaway(const Work& tau, int& direction) const {
+    const Work forward = next_at_or_after(alpha_, tau);
+    const Work backward = next_at_or_after(pi() + alpha_, tau);
+    direction = forward <= backward ? 1 : -1;
+    return forward <= backward ? forward : backward;
+  }
+
+  // The earliest critical time of a slip of sign s strictly after tau.
+  // Requires crosses().
+  Work next_critical(int s, const Work& tau) const {
+    const Work shift = s > 0 ? Work(0) : pi();
+    const Work minimum = next_after(shift + alpha_, tau);
+    const Work maximum = next_after(shift + pi() - alpha_, tau);
+    return minimum < maximum ? minimum : maximum;
+  }
+
+ private:
+  static Work pi() { return boost::math::constants::pi<Work>(); }
+  static Work two_pi() { return boost::math::constants::two_pi<Work>(); }
+
+  // Smallest base + 2 pi k >= tau.
+  static Work next_at_or_after(const Work& base, const Work& tau) {
+    using std::ceil;
+    Work t = base + two_pi() * ceil((tau - base) / two_pi());
+    if (t < tau) t += two_pi();  // guards the rounding of the quotient
+    return t;
+  }
+  // Smallest base + 2 pi k > tau.
+  static Work next_after(const Work& base, const Work& tau) {
+    using std::floor;
+    Work t = base + two_pi() * (floor((tau - base) / two_pi()) + 1);
+    if (t <= tau) t += two_pi();
+    return t;
+  }
+
+  bool crosses_;
+  Work alpha_ = 0;
+};
+
+}  // namespace frictionref::detail

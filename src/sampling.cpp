@@ -1,0 +1,119 @@
+#include "frictionref/sampling.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "frictionref/error.hpp"
+
+namespace frictionref {
+namespace {
+
+std::string text(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+}  // namespace
+
+void GridOptions::validate(double t0) const {
+  if (!std::isfinite(t_end)) throw InvalidInput("t_end", text(t_end), "must be a finite number");
+  if (!std::isfinite(dt)) throw InvalidInput("dt", text(dt), "must be a finite number");
+  if (!(t_end > t0)) throw InvalidInput("t_end", text(t_end), "must be > t0 = " + text(t0));
+  if (!(dt > 0)) throw InvalidInput("dt", text(dt), "must be > 0");
+  // Grid times are t0 + i dt; a step below the spacing of doubles near the
+  // grid would repeat times.
+  const double largest = std::fmax(std::fabs(t0), std::fabs(t_end));
+  if (!(largest + dt > largest))
+    throw InvalidInput("dt", text(dt),
+                       "must exceed the spacing of doubles at |t| = " + text(largest));
+}
+
+std::uint64_t GridOptions::grid_rows(double t0) const {
+  const double steps = std::ceil((t_end - t0) / dt);
+  if (!(steps < 1.8e19)) return std::numeric_limits<std::uint64_t>::max();
+  return static_cast<std::uint64_t>(steps) + 1;
+}
+
+UniformSampler::UniformSampler(const Model& model, const GridOptions& options)
+    : model_(model), options_(options), engine_(model, options.t_end) {
+  options.validate(model.t0);
+  have_phase_ = engine_.next(phase_);
+}
+
+double UniformSampler::grid_time(std::uint64_t i) const {
+  return model_.t0 + static_cast<double>(i) * options_.dt;
+}
+
+bool UniformSampler::finish() {
+  finished_ = true;
+  return false;
+}
+
+bool UniformSampler::advance_to(double t) {
+  while (t >= phase_.t_end && phase_.t_end < options_.t_end)
+    if (!engine_.next(phase_)) return false;
+  return true;
+}
+
+bool UniformSampler::next(State& state) {
+  if (finished_ || !have_phase_) return false;
+  // The next grid time below t_end (a grid time within 1e-9 dt of t_end is
+  // dropped, so t_end is not preceded by a near-duplicate), else t_end.
+  double t = grid_time(index_);
+  const bool on_grid = t < options_.t_end - 1e-9 * options_.dt;
+  if (!on_grid) t = options_.t_end;
+  // With events, a phase boundary before the next grid time comes first; it
+  // is reported in the phase that starts there.
+  if (options_.include_events && phase_.t_end < t) {
+    const double boundary = phase_.t_end;
+    if (!advance_to(boundary)) return finish();
+    state = evaluate(model_, phase_, boundary);
+    return true;
+  }
+  if (!advance_to(t)) return finish();
+  state = evaluate(model_, phase_, t);
+  if (on_grid) {
+    ++index_;
+  } else {
+    finished_ = true;
+  }
+  return true;
+}
+
+std::vector<State> sample_at(const Model& model, const std::vector<double>& times) {
+  std::vector<State> states;
+  if (times.empty()) return states;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (!std::isfinite(times[i]))
+      throw InvalidInput("times[" + std::to_string(i) + "]", text(times[i]),
+                         "must be a finite number");
+    if (times[i] < model.t0)
+      throw InvalidInput("times[" + std::to_string(i) + "]", text(times[i]),
+                         "must be >= t0 = " + text(model.t0));
+    if (i > 0 && times[i] < times[i - 1])
+      throw InvalidInput("times[" + std::to_string(i) + "]", text(times[i]),
+                         "must be >= the previous time " + text(times[i - 1]));
+  }
+  const double last = times.back();
+  if (last == model.t0) {
+    // Only the initial instant: a horizon just past it gives its phase.
+    ExactEngine engine(model, std::nextafter(model.t0, std::numeric_limits<double>::infinity()));
+    Phase phase;
+    engine.next(phase);
+    for (double t : times) states.push_back(evaluate(model, phase, t));
+    return states;
+  }
+  ExactEngine engine(model, last);
+  Phase phase;
+  engine.next(phase);
+  states.reserve(times.size());
+  for (double t : times) {
+    while (t >= phase.t_end && phase.t_end < last) engine.next(phase);
+    states.push_back(evaluate(model, phase, t));
+  }
+  return states;
+}
+
+}  // namespace frictionref
