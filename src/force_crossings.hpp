@@ -45,6 +45,21 @@ class ForceCrossings {
     return forward <= backward ? forward : backward;
   }
 
+  // What the force does within `tolerance` of tau: +1 / -1 if a forward /
+  // backward breakaway time is that close, 0 if the force re-enters the band
+  // |F| <= R there (pi - alpha + 2 pi k falling through +R, 2 pi - alpha +
+  // 2 pi k rising through -R), 2 if no crossing is that close. Breakaways win
+  // ties (lambda -> 0, where the band has no width). Requires crosses().
+  int crossing_near(const Work& tau, const Work& tolerance) const {
+    int direction = 0;
+    if (next_breakaway(tau - tolerance, direction) - tau <= tolerance) return direction;
+    const Work from = tau - tolerance;
+    const Work release_forward = next_at_or_after(pi() - alpha_, from);
+    const Work release_backward = next_at_or_after(two_pi() - alpha_, from);
+    if (release_forward - tau <= tolerance || release_backward - tau <= tolerance) return 0;
+    return 2;
+  }
+
   // The earliest critical time of a slip of sign s strictly after tau.
   // Requires crosses().
   Work next_critical(int s, const Work& tau) const {

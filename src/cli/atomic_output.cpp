@@ -1,0 +1,131 @@
+#include "atomic_output.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fmt/format.h>
+#include <vector>
+
+#include "cli_error.hpp"
+
+namespace frictionref::cli {
+namespace {
+
+constexpr std::size_t buffer_bytes = 1 << 16;  // rows are short; fewer write calls
+
+// Ctrl-C or kill during a long run must not leave the temporary file behind:
+// the handler removes it (unlink is async-signal-safe) and then dies of the
+// same signal as it would have without us. One output file is open at a time.
+char pending_temp[4096];
+volatile std::sig_atomic_t have_pending_temp = 0;
+
+extern "C" void remove_pending_temp(int signal_number) {
+  if (have_pending_temp) unlink(pending_temp);
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+void guard_temp_file(const std::string& path) {
+  static const bool installed = [] {
+    for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+      std::signal(signal_number, remove_pending_temp);
+    }
+    return true;
+  }();
+  (void)installed;
+  have_pending_temp = 0;
+  if (path.size() < sizeof pending_temp) {
+    std::memcpy(pending_temp, path.c_str(), path.size() + 1);
+    have_pending_temp = 1;
+  }
+}
+
+void unguard_temp_file() { have_pending_temp = 0; }
+
+// mkstemp makes the file 0600; give the result the permissions any newly
+// created file would get (0666 less the umask).
+void set_default_permissions(int fd) {
+  const mode_t mask = umask(0);
+  umask(mask);
+  fchmod(fd, 0666 & ~mask);
+}
+
+}  // namespace
+
+AtomicOutput::AtomicOutput(std::optional<std::string> path, std::string option)
+    : path_(std::move(path)), option_(std::move(option)) {
+  if (!path_) {
+    file_ = stdout;
+    std::setvbuf(file_, nullptr, _IOFBF, buffer_bytes);
+    return;
+  }
+  if (path_->empty()) fail("must not be empty");
+  std::error_code ignored;
+  if (std::filesystem::is_directory(*path_, ignored)) fail("is a directory");
+
+  std::vector<char> name(path_->begin(), path_->end());
+  const std::string suffix = ".tmp.XXXXXX";
+  name.insert(name.end(), suffix.begin(), suffix.end());
+  name.push_back('\0');
+  const int fd = mkstemp(name.data());
+  if (fd < 0) fail(fmt::format("cannot create a file there: {}", std::strerror(errno)));
+  temp_path_ = name.data();
+  guard_temp_file(temp_path_);
+  set_default_permissions(fd);
+  file_ = fdopen(fd, "w");
+  if (!file_) {
+    const int error = errno;
+    close(fd);
+    discard();
+    fail(fmt::format("cannot open for writing: {}", std::strerror(error)));
+  }
+  std::setvbuf(file_, nullptr, _IOFBF, buffer_bytes);
+}
+
+AtomicOutput::~AtomicOutput() { discard(); }
+
+void AtomicOutput::discard() {
+  if (!path_) return;
+  if (file_) std::fclose(file_);
+  file_ = nullptr;
+  if (!temp_path_.empty()) std::remove(temp_path_.c_str());
+  temp_path_.clear();
+  unguard_temp_file();
+}
+
+void AtomicOutput::commit() {
+  if (!path_) {
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+      throw bad_input(fmt::format("writing to standard output failed: {}", std::strerror(errno)));
+    }
+    return;
+  }
+  // fsync before rename: after a crash the name shows the old file or the
+  // complete new one, never a truncated one.
+  const bool written = std::fflush(file_) == 0 && !std::ferror(file_) && fsync(fileno(file_)) == 0;
+  const int write_error = errno;
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!written || !closed) {
+    discard();
+    fail(fmt::format("write failed: {}", std::strerror(written ? errno : write_error)));
+  }
+  if (std::rename(temp_path_.c_str(), path_->c_str()) != 0) {
+    const int error = errno;
+    discard();
+    fail(fmt::format("cannot rename the finished file into place: {}", std::strerror(error)));
+  }
+  temp_path_.clear();
+  unguard_temp_file();
+}
+
+void AtomicOutput::fail(const std::string& what) const {
+  throw bad_input(fmt::format("{} = {}: {}", option_, *path_, what));
+}
+
+}  // namespace frictionref::cli

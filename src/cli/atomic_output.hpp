@@ -1,0 +1,39 @@
+// Where a command writes: standard output, or a file that appears only when
+// complete. The file is written as "<path>.tmp.XXXXXX" in the same directory
+// (same file system, so the final rename is atomic) and renamed over <path> by
+// commit(); on any error, or without commit(), the temporary file is removed,
+// so no partial output file ever exists.
+#pragma once
+
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace frictionref::cli {
+
+class AtomicOutput {
+ public:
+  // No path: standard output. `option` names the path in error messages ("-o").
+  // Throws bad input if the temporary file cannot be created.
+  AtomicOutput(std::optional<std::string> path, std::string option);
+  ~AtomicOutput();
+  AtomicOutput(const AtomicOutput&) = delete;
+  AtomicOutput& operator=(const AtomicOutput&) = delete;
+
+  std::FILE* stream() const { return file_; }
+
+  // Flushes, syncs and renames into place (or flushes stdout); throws bad
+  // input naming the option on any write error.
+  void commit();
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const;
+  void discard();
+
+  std::optional<std::string> path_;
+  std::string option_;
+  std::string temp_path_;
+  std::FILE* file_ = nullptr;
+};
+
+}  // namespace frictionref::cli

@@ -1,0 +1,80 @@
+#include "csv_format.hpp"
+
+#include <fmt/format.h>
+
+#include "frictionref/types.hpp"
+#include "frictionref/version.hpp"
+
+namespace frictionref::cli {
+
+std::string number(double value) { return fmt::format("{}", value); }
+
+std::string model_fields(const Model& model) {
+  return fmt::format("mass={} amplitude={} omega={} friction={} lambda={} x0={} v0={} t0={}",
+                     model.mass, model.amplitude, model.omega, model.friction, model.lambda(),
+                     model.x0, model.v0, model.t0);
+}
+
+namespace {
+
+bool needs_quotes(const std::string& word) {
+  if (word.empty()) return true;
+  for (const char c : word) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       std::string_view("-_+=.,:/@%").find(c) != std::string_view::npos;
+    if (!plain) return true;
+  }
+  return false;
+}
+
+// POSIX shell single quotes; a control character would end the comment line,
+// so it becomes '?' (the line is a record, not a second channel of input).
+std::string shell_quote(const std::string& word) {
+  if (!needs_quotes(word)) return word;
+  std::string quoted = "'";
+  for (const char c : word) {
+    if (c == '\'') {
+      quoted += "'\\''";
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      quoted += '?';
+    } else {
+      quoted += c;
+    }
+  }
+  return quoted + "'";
+}
+
+}  // namespace
+
+std::string command_line(int argc, const char* const* argv) {
+  std::string line;
+  for (int i = 0; i < argc; ++i) {
+    if (i > 0) line += ' ';
+    line += shell_quote(argv[i]);
+  }
+  return line;
+}
+
+void write_metadata(std::FILE* out, const Model& model, const std::string& command,
+                    const std::vector<std::string>& extra_lines) {
+  fmt::print(out, "# frictionref {}\n# model: {}\n# command: {}\n", version, model_fields(model),
+             command);
+  for (const std::string& line : extra_lines) fmt::print(out, "# {}\n", line);
+}
+
+void write_phase_header(std::FILE* out) {
+  std::fputs("phase,t_begin,t_end,x_begin,x_end,v_begin,v_end\n", out);
+}
+
+void write_phase_row(std::FILE* out, const Phase& phase) {
+  fmt::print(out, "{},{},{},{},{},{},{}\n", to_string(phase.kind), phase.t_begin, phase.t_end,
+             phase.x_begin, phase.x_end, phase.v_begin, phase.v_end);
+}
+
+void write_state_header(std::FILE* out) { std::fputs("t,x,v,a,phase\n", out); }
+
+void write_state_row(std::FILE* out, const State& state) {
+  fmt::print(out, "{},{},{},{},{}\n", state.t, state.x, state.v, state.a, to_string(state.phase));
+}
+
+}  // namespace frictionref::cli

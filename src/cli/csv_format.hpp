@@ -1,0 +1,37 @@
+// How numbers, metadata and rows are spelled in every file we write
+// (docs/cli.md "Output formats"). Numbers use fmt "{}": the shortest text that
+// strtod reads back to the same double.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "frictionref/model.hpp"
+#include "frictionref/phase.hpp"
+
+namespace frictionref::cli {
+
+// Shortest round-trip form: 0.3, 1, 1e-05, -0, inf, nan.
+std::string number(double value);
+
+// "mass=1 amplitude=1 omega=1 friction=0.3 lambda=0.3 x0=0 v0=0 t0=0"
+std::string model_fields(const Model& model);
+
+// The command line as one shell-quoted line, for "# command:" (re-runnable).
+std::string command_line(int argc, const char* const* argv);
+
+// "# frictionref <version>", "# model: ...", "# command: ...", then one
+// "# <line>" per extra line (e.g. "grid: ..."). Comment lines precede the header.
+void write_metadata(std::FILE* out, const Model& model, const std::string& command,
+                    const std::vector<std::string>& extra_lines);
+
+// events: "phase,t_begin,t_end,x_begin,x_end,v_begin,v_end"
+void write_phase_header(std::FILE* out);
+void write_phase_row(std::FILE* out, const Phase& phase);
+
+// curve: "t,x,v,a,phase"
+void write_state_header(std::FILE* out);
+void write_state_row(std::FILE* out, const State& state);
+
+}  // namespace frictionref::cli

@@ -1,0 +1,105 @@
+#include "curve.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <memory>
+
+#include "atomic_output.hpp"
+#include "command.hpp"
+#include "csv_format.hpp"
+#include "model_options.hpp"
+
+namespace frictionref::cli {
+namespace {
+
+struct CurveOptions {
+  ModelOptions model;
+  std::string t_end;
+  std::string dt;
+  std::string output;
+  CLI::Option* output_option = nullptr;
+  bool include_events = false;
+  bool force = false;
+};
+
+void run_curve(const CurveOptions& options, const Invocation& invocation) {
+  TypedInputs inputs = options.model.typed_inputs();
+  inputs["t_end"] = {"--t-end", options.t_end};
+  inputs["dt"] = {"--dt", options.dt};
+  const Model model = options.model.model();
+  GridOptions grid;
+  grid.t_end = parse_number(inputs.at("t_end"));
+  grid.dt = parse_number(inputs.at("dt"));
+  grid.include_events = options.include_events;
+  naming_options(inputs, [&] { grid.validate(model.t0); });
+
+  const std::uint64_t rows = grid.grid_rows(model.t0);
+  if (!options.force && rows > max_rows_without_force) {
+    throw bad_input(fmt::format(
+        "--dt = {}: the grid up to --t-end = {} has {} rows, more than 10^9; pass --force to "
+        "write them anyway",
+        options.dt, options.t_end, rows));
+  }
+  UniformSampler sampler =
+      naming_options(inputs, [&] { return UniformSampler(model, grid); });
+
+  AtomicOutput out(options.output_option->count() > 0 ? std::optional(options.output)
+                                                      : std::nullopt,
+                   "-o");
+  require_reached_end(write_curve_csv(out.stream(), model, sampler, invocation.command_line,
+                                      {grid_metadata(model, grid)}));
+  out.commit();
+}
+
+}  // namespace
+
+std::string grid_metadata(const Model& model, const GridOptions& grid) {
+  return fmt::format("grid: t0={} t_end={} dt={} include_events={} grid_rows={}", model.t0,
+                     grid.t_end, grid.dt, grid.include_events, grid.grid_rows(model.t0));
+}
+
+Summary write_curve_csv(std::FILE* out, const Model& model, UniformSampler& sampler,
+                        const std::string& command,
+                        const std::vector<std::string>& extra_metadata) {
+  write_metadata(out, model, command, extra_metadata);
+  write_state_header(out);
+  State state;
+  while (sampler.next(state)) write_state_row(out, state);
+  return sampler.engine_summary();
+}
+
+Command add_curve_command(CLI::App& app) {
+  auto options = std::make_shared<CurveOptions>();
+  CLI::App* command = app.add_subcommand(
+      "curve",
+      "The exact position, velocity and acceleration on the grid t0, t0 + H, t0 + 2H, ... and "
+      "at T itself, as CSV rows t,x,v,a,phase (grid times computed as t0 + i H, never "
+      "accumulated).");
+  options->model.add_to(*command);
+  command->add_option("--t-end", options->t_end, "last time T [time]; > t0")
+      ->required()
+      ->type_name("T");
+  command->add_option("--dt", options->dt, "grid step H [time]; > 0")
+      ->required()
+      ->type_name("H");
+  options->output_option =
+      command
+          ->add_option("-o", options->output,
+                       "write to FILE (atomically: complete or not at all) instead of stdout")
+          ->type_name("FILE");
+  command->add_flag("--include-events", options->include_events,
+                    "also write a row at every phase boundary, so plots keep the kinks (a time "
+                    "on both the grid and the boundaries appears once)");
+  command->add_flag("--force", options->force, "allow more than 10^9 grid rows");
+  command->footer(
+      "Output: '# ...' metadata lines (including '# grid: ...'), then t,x,v,a,phase. At a phase\n"
+      "boundary the row carries the new phase and its acceleration (right limit); the row at T\n"
+      "carries the last phase.\n"
+      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
+      "Examples:\n"
+      "  frictionref curve --lambda 0.7 --t-end 30 --dt 0.01 --include-events -o curve.csv\n"
+      "  frictionref curve --friction 0.3 --t0 -5 --t-end 5 --dt 0.5");
+  return {command, [options](const Invocation& invocation) { run_curve(*options, invocation); }};
+}
+
+}  // namespace frictionref::cli

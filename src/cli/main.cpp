@@ -1,0 +1,107 @@
+// frictionref: the command-line program. Parses with CLI11, runs the chosen
+// command, and turns every failure into one line on stderr and an exit code
+// (cli_error.hpp; docs/cli.md).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <fmt/format.h>
+#include <string>
+#include <vector>
+
+#include "cli_error.hpp"
+#include "command.hpp"
+#include "csv_format.hpp"
+#include "frictionref/error.hpp"
+#include "frictionref/version.hpp"
+
+namespace frictionref::cli {
+namespace {
+
+constexpr const char* usage =
+    "usage: frictionref {events|curve|reproduce|classify} [options] (see frictionref --help)";
+
+// Scripts read stderr line by line: whatever the message, it is one line.
+int report(ExitCode code, std::string message) {
+  for (char& c : message) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  std::fflush(stdout);
+  fmt::print(stderr, "frictionref: error: {}\n", message);
+  return code;
+}
+
+// CLI11 calls an unknown command an unexpected argument; say what it is.
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc,
+                                char** argv) {
+  const bool no_command = app.get_subcommands().empty();
+  if (no_command && dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr) {
+    for (int i = 1; i < argc; ++i) {
+      if (argv[i][0] != '-') return fmt::format("unknown command '{}'; {}", argv[i], usage);
+    }
+  }
+  return error.what();
+}
+
+int run(int argc, char** argv) {
+  CLI::App app(
+      "frictionref: the exact motion of a mass m on a surface with Coulomb friction R, driven "
+      "by the force B sin(w t):\n"
+      "  m x'' = B sin(w t) - R while sliding forward (v > 0), + R while sliding back (v < 0);\n"
+      "  at rest while |B sin(w t)| <= R (static friction = sliding friction).\n"
+      "Each phase is solved in closed form and every stop, reversal and breakaway is found\n"
+      "exactly: no time step, no tolerance. lambda = R / B decides the steady state.",
+      "frictionref");
+  app.set_version_flag("--version", std::string("frictionref ") + version,
+                       "print 'frictionref <version>' and exit");
+  app.require_subcommand(0, 1);
+  app.footer(
+      "Units: any consistent set (force = mass * length / time^2); w in rad per time unit.\n"
+      "Defaults: --mass 1 --amplitude 1 --omega 1 --x0 0 --v0 0 --t0 0; exactly one of\n"
+      "--friction R or --lambda L (R = L * B) is required.\n"
+      "Output goes to stdout, or with -o FILE atomically to FILE; numbers are printed in the\n"
+      "shortest form that reads back to the same double.\n"
+      "Exit codes: 0 success; 1 reserved (compare: FAIL); 2 bad input or unwritable output\n"
+      "(one line on stderr naming the option, no output file); 3 internal error (please report).\n"
+      "Examples:\n"
+      "  frictionref classify --lambda 0.7\n"
+      "  frictionref events --lambda 0.3 --t-end 30 -o events.csv\n"
+      "  frictionref curve --lambda 0.7 --t-end 30 --dt 0.01 --include-events\n"
+      "  frictionref reproduce --out results\n"
+      "'frictionref <command> --help' explains each command; docs/cli.md has the formats.");
+
+  const std::vector<Command> commands{add_events_command(app), add_curve_command(app),
+                                      add_reproduce_command(app), add_classify_command(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& help_or_version) {
+    return app.exit(help_or_version);
+  } catch (const CLI::ParseError& error) {
+    return report(exit_bad_input, parse_error_message(app, error, argc, argv));
+  }
+
+  const Invocation invocation{command_line(argc, argv)};
+  for (const Command& command : commands) {
+    if (command.app->parsed()) {
+      command.run(invocation);
+      return exit_success;
+    }
+  }
+  return report(exit_bad_input, std::string("a command is required; ") + usage);
+}
+
+}  // namespace
+}  // namespace frictionref::cli
+
+int main(int argc, char** argv) {
+  using namespace frictionref::cli;
+  try {
+    return run(argc, argv);
+  } catch (const CliError& error) {
+    return report(error.code(), error.what());
+  } catch (const frictionref::InvalidInput& error) {
+    // Commands translate these to option names; this is the safety net.
+    return report(exit_bad_input, error.what());
+  } catch (const std::exception& error) {
+    return report(exit_internal_error, std::string("internal error: ") + error.what());
+  }
+}
