@@ -11,7 +11,7 @@
 
 namespace frictionref {
 
-// lambda* = 2 / sqrt(4 + pi^2) = 0.53702927214631507683...: continuous motion
+// lambda* = 2 / sqrt(4 + pi^2) = 0.53702927214631507685...: continuous motion
 // iff lambda < lambda*.
 double regime_threshold();
 // The value quoted in the seed problem (from Tou & Schultheiss), for reporting.
