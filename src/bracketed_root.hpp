@@ -16,10 +16,12 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
+#include <type_traits>
 
 namespace frictionref::detail {
 
-// GSL Brent on [lo, hi] (f(lo), f(hi) of opposite signs, checked by the
+// GSL Brent on [lo, hi] to a relative width of 1e-9 (f(lo), f(hi) of opposite signs, checked by the
 // caller). Returns false if GSL reports an error; `root` is then unchanged.
 bool gsl_brent(double (*f)(double, void*), void* params, double lo, double hi, double& root,
                std::uint64_t& calls);
@@ -32,30 +34,32 @@ struct RootBracket {
   bool ok = true;
 };
 
-template <class Work, class F, class DF>
-RootBracket<Work> decreasing_root(const F& f, const DF& slope, Work lo, Work hi,
-                                  std::uint64_t& calls) {
-  // Generic path: TOMS 748 (Alefeld, Potra, Shi 1995) to the type's precision.
+// Boost.Math TOMS 748 (Alefeld, Potra, Shi 1995) to the type's precision.
+template <class Work, class F>
+RootBracket<Work> toms748_root(const F& f, const Work& lo, const Work& hi, std::uint64_t& calls) {
   RootBracket<Work> result{lo, lo, hi, true};
-  std::uintmax_t max_iter = 400;
+  constexpr std::uintmax_t kMaxIterations = 400;
+  std::uintmax_t iterations = kMaxIterations;
   const auto counted = [&](const Work& x) {
     ++calls;
     return f(x);
   };
-  boost::math::tools::eps_tolerance<Work> tol(std::numeric_limits<Work>::digits - 2);
-  const auto bracket = boost::math::tools::toms748_solve(counted, lo, hi, tol, max_iter);
-  (void)slope;
-  result.lo = bracket.first;
-  result.hi = bracket.second;
-  result.root = f(bracket.second) <= 0 ? bracket.second : bracket.first;
-  ++calls;
-  result.ok = max_iter < 400;
+  try {
+    boost::math::tools::eps_tolerance<Work> tolerance(std::numeric_limits<Work>::digits - 2);
+    const auto bracket = boost::math::tools::toms748_solve(counted, lo, hi, tolerance, iterations);
+    result.lo = bracket.first;
+    result.hi = bracket.second;
+    result.root = counted(bracket.second) <= 0 ? bracket.second : bracket.first;
+    result.ok = iterations < kMaxIterations;
+  } catch (const std::exception&) {  // Boost reports a lost bracket as domain_error
+    result.ok = false;
+  }
   return result;
 }
 
 template <class F, class DF>
-RootBracket<long double> decreasing_root(const F& f, const DF& slope, long double lo,
-                                         long double hi, std::uint64_t& calls) {
+RootBracket<long double> brent_then_newton(const F& f, const DF& slope, long double lo,
+                                           long double hi, std::uint64_t& calls) {
   RootBracket<long double> result{lo, lo, hi, true};
 
   // Stage 1: GSL Brent in double. The bracket ends are rounded to double;
@@ -70,10 +74,13 @@ RootBracket<long double> decreasing_root(const F& f, const DF& slope, long doubl
     ++*q->calls;
     return static_cast<double>((*q->f)(static_cast<long double>(x)));
   };
-  const double lo_d = static_cast<double>(lo);
-  const double hi_d = static_cast<double>(hi);
+  // Round the bracket ends inward, so the double bracket lies inside [lo, hi].
+  double lo_d = static_cast<double>(lo);
+  double hi_d = static_cast<double>(hi);
+  if (lo_d < lo) lo_d = std::nextafter(lo_d, HUGE_VAL);
+  if (hi_d > hi) hi_d = std::nextafter(hi_d, -HUGE_VAL);
   long double x = lo + (hi - lo) / 2;
-  if (lo_d < hi_d && lo_d >= lo && hi_d <= hi) {
+  if (lo_d < hi_d) {
     double root_d = 0;
     if (gsl_brent(+f_double, &params, lo_d, hi_d, root_d, calls)) x = root_d;
   }
@@ -93,14 +100,33 @@ RootBracket<long double> decreasing_root(const F& f, const DF& slope, long doubl
     if (width <= 2 * eps * std::fmax(1.0L, std::fabs(x))) break;
     const long double d = slope(x);
     long double next = d < 0 ? x - fx / d : result.lo + width / 2;
-    if (!(next > result.lo && next < result.hi)) next = result.lo + width / 2;
-    // A Newton step smaller than the resolution: test the neighbour across
-    // the root instead, which closes the bracket next iteration.
+    // A Newton step below the resolution: test the neighbour across the root
+    // instead, which closes the bracket next iteration.
     if (next == x) next = fx > 0 ? std::nextafter(x, result.hi) : std::nextafter(x, result.lo);
+    if (!(next > result.lo && next < result.hi)) next = result.lo + width / 2;
     x = next;
   }
   result.root = result.hi;
   return result;
+}
+
+// The zero of f on [lo, hi]: GSL + long double polish for long double, TOMS
+// 748 for every other type.
+template <class Work, class F, class DF>
+RootBracket<Work> decreasing_root(const F& f, const DF& slope, const Work& lo, const Work& hi,
+                                  std::uint64_t& calls) {
+  // The caller has seen f(hi) <= 0. If f(lo) is not > 0 either, the zero is
+  // at lo to within the evaluation noise (a slip shorter than rounding, e.g.
+  // one that starts a hair before the force falls back to R): say so rather
+  // than hand a non-bracket to the solvers.
+  ++calls;
+  if (!(f(lo) > 0)) return RootBracket<Work>{lo, lo, lo, true};
+  if constexpr (std::is_same_v<Work, long double>) {
+    return brent_then_newton(f, slope, lo, hi, calls);
+  } else {
+    (void)slope;
+    return toms748_root(f, lo, hi, calls);
+  }
 }
 
 }  // namespace frictionref::detail

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <algorithm>
+#include <charconv>
+#include <type_traits>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -19,6 +21,11 @@ namespace detail {
 
 template <class T>
 std::string to_text(const T& value) {
+  if constexpr (std::is_same_v<T, double>) {  // shortest round-trip form
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+    return std::string(buffer, end);
+  }
   std::ostringstream text;
   text.precision(std::numeric_limits<T>::max_digits10);
   text << value;
@@ -34,6 +41,20 @@ Work time_resolution(const Work& tau) {
   const Work scale = fabs(tau) > Work(1) ? Work(fabs(tau)) : Work(1);
   return Work(8) * Work(std::numeric_limits<Real>::epsilon()) * scale;
 }
+
+// A root bracket lost to rounding: an internal invariant broken, reported as
+// Termination::numerical_failure by next().
+struct LostBracket {};
+
+template <class Root>
+const Root& checked(const Root& root) {
+  if (!root.ok) throw LostBracket{};
+  return root;
+}
+
+// Beyond this forcing phase a double cannot resolve w t well enough for the
+// event logic (its ulp there is 2e-6 rad); about 1.6e9 forcing periods.
+constexpr double kMaxForcingPhase = 1e10;
 
 }  // namespace detail
 
@@ -72,6 +93,12 @@ BasicExactEngine<Real>::BasicExactEngine(const BasicModel<Real>& model, const Re
 
   tau_ = omega_ * Work(model.t0);
   tau_end_ = omega_ * Work(t_end);
+  using std::fabs;
+  const Work max_phase(detail::kMaxForcingPhase);
+  const std::string phase_rule = "must satisfy |w t| <= 1e10 rad (a double cannot resolve the "
+                                 "forcing phase beyond that)";
+  if (fabs(tau_) > max_phase) throw InvalidInput("t0", detail::to_text(model.t0), phase_rule);
+  if (fabs(tau_end_) > max_phase) throw InvalidInput("t_end", detail::to_text(t_end), phase_rule);
   if (!(tau_end_ > tau_))
     throw InvalidInput("t_end", detail::to_text(t_end),
                        "must exceed t0 by more than the resolution of w t");
@@ -144,8 +171,8 @@ bool BasicExactEngine<Real>::find_slip_end(Work& tau_stop, int& direction) {
       direction = 0;
       return true;
     }
-    tau_stop = detail::decreasing_root<Work>(speed, slope, piece_begin, piece_end,
-                                             summary_.root_function_calls)
+    tau_stop = detail::checked(detail::decreasing_root<Work>(speed, slope, piece_begin, piece_end,
+                                                             summary_.root_function_calls))
                    .root;
     direction = 0;  // nothing breaks away when lambda >= 1
     return true;
@@ -170,8 +197,8 @@ bool BasicExactEngine<Real>::find_slip_end(Work& tau_stop, int& direction) {
     if (end_speed <= 0) {
       Work stop = piece_end;
       if (end_speed < 0)
-        stop = detail::decreasing_root<Work>(speed, slope, piece_begin, piece_end,
-                                             summary_.root_function_calls)
+        stop = detail::checked(detail::decreasing_root<Work>(speed, slope, piece_begin, piece_end,
+                                                             summary_.root_function_calls))
                    .root;
       // v = 0 where the slip goes on in the same direction: a touch at a
       // minimum of s v (a breakaway time in direction s). Not a stop.
@@ -260,7 +287,16 @@ bool BasicExactEngine<Real>::next(BasicPhase<Real>& phase) {
     const PhaseKind kind = sign_ > 0 ? PhaseKind::slip_forward : PhaseKind::slip_backward;
     Work tau_stop = tau_end_;
     int next = 0;
-    const bool stops = find_slip_end(tau_stop, next);
+    bool stops = false;
+    try {
+      stops = find_slip_end(tau_stop, next);
+    } catch (const detail::LostBracket&) {
+      done_ = true;
+      summary_.termination = Termination::numerical_failure;
+      summary_.message = "lost the root bracket of a slip end after t = " +
+                         detail::to_text(Real(tau_ / omega_)) + " (please report this model)";
+      return false;
+    }
     const PhaseLaw<Work> law(model_, kind, tau_, x_, v_);
     const Work end = stops ? tau_stop : tau_end_;
     const Work x_end = law.position(end);

@@ -39,7 +39,8 @@ struct BasicSummary {
 
   std::uint64_t phases = 0;
   std::array<std::uint64_t, 3> phases_by_kind{};  // indexed by PhaseKind
-  std::uint64_t stops = 0;            // slips that ended with v = 0 (before the horizon)
+  std::uint64_t stops = 0;            // slips that ended with v = 0 before the horizon,
+                                      // including direct reversals (no rest)
   std::uint64_t reversals = 0;        // stops followed at once by a slip the other way
   std::uint64_t breakaways = 0;       // sticks that ended in a slip
   std::uint64_t merged_sticks = 0;    // sticks shorter than the time resolution, not emitted
@@ -59,7 +60,8 @@ class BasicExactEngine {
  public:
   using Work = work_t<Real>;
 
-  // Validates model, t_end (finite, > t0) and options; throws InvalidInput.
+  // Validates model, t_end (finite, > t0), |w t0| and |w t_end| <= 1e10 rad,
+  // and options; throws InvalidInput.
   BasicExactEngine(const BasicModel<Real>& model, const Real& t_end,
                    const SolveOptions& options = {});
 

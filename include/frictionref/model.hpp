@@ -10,10 +10,12 @@
 // Boost.Multiprecision type (see multiprecision.hpp).
 #pragma once
 
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 #include "frictionref/error.hpp"
 
@@ -60,6 +62,11 @@ struct BasicModel {
     if (!isfinite(value)) fail(name, value, "must be a finite number");
   }
   [[noreturn]] static void fail(const char* name, const Real& value, const char* rule) {
+    if constexpr (std::is_same_v<Real, double>) {  // shortest round-trip form
+      char buffer[32];
+      const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+      throw InvalidInput(name, std::string(buffer, end), rule);
+    }
     std::ostringstream text;
     text.precision(std::numeric_limits<Real>::max_digits10);
     text << value;
