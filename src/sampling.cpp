@@ -30,10 +30,19 @@ void GridOptions::validate(double t0) const {
                        "must exceed the spacing of doubles at |t| = " + text(largest));
 }
 
+double GridOptions::last_grid_limit() const { return t_end - 1e-9 * dt; }
+
 std::uint64_t GridOptions::grid_rows(double t0) const {
-  const double steps = std::ceil((t_end - t0) / dt);
-  if (!(steps < 1.8e19)) return std::numeric_limits<std::uint64_t>::max();
-  return static_cast<std::uint64_t>(steps) + 1;
+  // Count i with t0 + i dt < last_grid_limit() by the sampler's own
+  // arithmetic (estimate, then correct the rounding), plus the row at t_end.
+  const double limit = last_grid_limit();
+  const double estimate = std::ceil((limit - t0) / dt);
+  if (!(estimate < 1.8e19)) return std::numeric_limits<std::uint64_t>::max();
+  std::uint64_t below = estimate > 0 ? static_cast<std::uint64_t>(estimate) : 0;
+  const auto grid = [&](std::uint64_t i) { return t0 + static_cast<double>(i) * dt; };
+  while (below > 0 && grid(below - 1) >= limit) --below;
+  while (grid(below) < limit) ++below;
+  return below + 1;
 }
 
 UniformSampler::UniformSampler(const Model& model, const GridOptions& options)
@@ -62,7 +71,7 @@ bool UniformSampler::next(State& state) {
   // The next grid time below t_end (a grid time within 1e-9 dt of t_end is
   // dropped, so t_end is not preceded by a near-duplicate), else t_end.
   double t = grid_time(index_);
-  const bool on_grid = t < options_.t_end - 1e-9 * options_.dt;
+  const bool on_grid = t < options_.last_grid_limit();
   if (!on_grid) t = options_.t_end;
   // With events, a phase boundary before the next grid time comes first; it
   // is reported in the phase that starts there.

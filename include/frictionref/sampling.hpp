@@ -18,8 +18,11 @@ struct GridOptions {
 
   // Throws InvalidInput naming the field and the rule.
   void validate(double t0) const;
-  // Rows of the plain grid: t0, t0 + dt, ... below t_end, and t_end itself
-  // (without event rows). Saturates at UINT64_MAX.
+  // Grid times t0 + i dt are kept while below this (t_end - 1e-9 dt), so
+  // t_end is never preceded by a near-duplicate.
+  double last_grid_limit() const;
+  // Rows of the plain grid: t0, t0 + dt, ... below last_grid_limit(), and
+  // t_end itself (without event rows). Saturates at UINT64_MAX.
   std::uint64_t grid_rows(double t0) const;
 };
 
