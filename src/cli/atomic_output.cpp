@@ -1,6 +1,7 @@
 #include "atomic_output.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -8,7 +9,6 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
-#include <fmt/format.h>
 #include <vector>
 
 #include "cli_error.hpp"
@@ -33,7 +33,10 @@ extern "C" void remove_pending_temp(int signal_number) {
 void guard_temp_file(const std::string& path) {
   static const bool installed = [] {
     for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
-      std::signal(signal_number, remove_pending_temp);
+      // A signal the caller ignores (nohup, background jobs) stays ignored.
+      if (std::signal(signal_number, remove_pending_temp) == SIG_IGN) {
+        std::signal(signal_number, SIG_IGN);
+      }
     }
     return true;
   }();

@@ -1,8 +1,9 @@
 #include "classify.hpp"
 
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <fmt/format.h>
 #include <memory>
 
 #include "atomic_output.hpp"
@@ -71,10 +72,10 @@ nlohmann::ordered_json classify_json(const Model& model, const SteadyState& stea
   json["slide_per_half_period"] = value_or_null(steady.slide_per_half_period);
   json["peak_velocity"] = value_or_null(steady.peak_velocity);
   json["energy_per_period"] = value_or_null(steady.energy_per_period);
-  json["model"] = {{"mass", model.mass},         {"amplitude", model.amplitude},
-                   {"omega", model.omega},       {"friction", model.friction},
-                   {"lambda", model.lambda()},   {"x0", model.x0},
-                   {"v0", model.v0},             {"t0", model.t0}};
+  json["model"] = {{"mass", model.mass},       {"amplitude", model.amplitude},
+                   {"omega", model.omega},     {"friction", model.friction},
+                   {"lambda", model.lambda()}, {"x0", model.x0},
+                   {"v0", model.v0},           {"t0", model.t0}};
   json["version"] = version;
   return json;
 }
@@ -82,15 +83,14 @@ nlohmann::ordered_json classify_json(const Model& model, const SteadyState& stea
 Command add_classify_command(CLI::App& app) {
   auto options = std::make_shared<ClassifyOptions>();
   CLI::App* command = app.add_subcommand(
-      "classify",
-      "The steady-state regime for lambda = R / B: 'continuous' (lambda < lambda* = 2 / sqrt(4 "
-      "+ pi^2) = 0.53703, no dead bands), 'dead-bands' (lambda* <= lambda < 1, two stops per "
-      "forcing period) or 'stops' (lambda >= 1, at rest after the transient); with the seed's "
-      "quoted threshold 0.536 and the closed-form steady-state figures. Needs B > 0; x0, v0 and "
-      "t0 do not matter.");
+      "classify", "Steady-state regime for lambda = R / B, with its closed-form figures");
   options->model.add_to(*command);
   command->add_flag("--json", options->json, "print one JSON object instead of name: value lines");
   command->footer(
+      "Computes the regime: 'continuous' if lambda < lambda* = 2 / sqrt(4 + pi^2) = 0.5370293\n"
+      "(no dead bands), 'dead-bands' if lambda* <= lambda < 1 (two stops per forcing period),\n"
+      "'stops' if lambda >= 1 (at rest after the transient); also what the seed's quoted\n"
+      "threshold 0.536 would say. Needs B > 0; x0, v0 and t0 do not matter.\n"
       "Output: 'name: value' lines, or with --json an object with the keys regime, lambda,\n"
       "threshold, threshold_quoted, regime_by_quoted_threshold, reversal_phase, breakaway_phase,\n"
       "stop_phase (forcing phases w t mod 2 pi [rad]), stops_per_period, stuck_fraction,\n"
@@ -100,8 +100,7 @@ Command add_classify_command(CLI::App& app) {
       "Examples:\n"
       "  frictionref classify --lambda 0.7\n"
       "  frictionref classify --amplitude 2 --friction 1.2 --json");
-  return {command,
-          [options](const Invocation& invocation) { run_classify(*options, invocation); }};
+  return {command, [options](const Invocation& invocation) { run_classify(*options, invocation); }};
 }
 
 }  // namespace frictionref::cli

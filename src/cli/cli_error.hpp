@@ -18,17 +18,14 @@ enum ExitCode : int {
 // what() is the message without the "frictionref: error: " prefix.
 class CliError : public std::runtime_error {
  public:
-  CliError(ExitCode code, const std::string& message)
-      : std::runtime_error(message), code_(code) {}
+  CliError(ExitCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
   ExitCode code() const { return code_; }
 
  private:
   ExitCode code_;
 };
 
-inline CliError bad_input(const std::string& message) {
-  return CliError(exit_bad_input, message);
-}
+inline CliError bad_input(const std::string& message) { return CliError(exit_bad_input, message); }
 
 inline CliError internal_error(const std::string& message) {
   return CliError(exit_internal_error, "internal error: " + message);

@@ -1,7 +1,8 @@
 #include "curve.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
 #include <memory>
 
 #include "atomic_output.hpp"
@@ -40,12 +41,10 @@ void run_curve(const CurveOptions& options, const Invocation& invocation) {
         "write them anyway",
         options.dt, options.t_end, rows));
   }
-  UniformSampler sampler =
-      naming_options(inputs, [&] { return UniformSampler(model, grid); });
+  UniformSampler sampler = naming_options(inputs, [&] { return UniformSampler(model, grid); });
 
-  AtomicOutput out(options.output_option->count() > 0 ? std::optional(options.output)
-                                                      : std::nullopt,
-                   "-o");
+  AtomicOutput out(
+      options.output_option->count() > 0 ? std::optional(options.output) : std::nullopt, "-o");
   require_reached_end(write_curve_csv(out.stream(), model, sampler, invocation.command_line,
                                       {grid_metadata(model, grid)}));
   out.commit();
@@ -71,15 +70,12 @@ Summary write_curve_csv(std::FILE* out, const Model& model, UniformSampler& samp
 Command add_curve_command(CLI::App& app) {
   auto options = std::make_shared<CurveOptions>();
   CLI::App* command = app.add_subcommand(
-      "curve",
-      "The exact position, velocity and acceleration on the grid t0, t0 + H, t0 + 2H, ... and "
-      "at T itself, as CSV rows t,x,v,a,phase (grid times computed as t0 + i H, never "
-      "accumulated).");
+      "curve", "Position, velocity and acceleration on a uniform time grid (CSV)");
   options->model.add_to(*command);
-  command->add_option("--t-end", options->t_end, "last time T [time]; > t0")
+  numeric(command->add_option("--t-end", options->t_end, "last time T [time]; > t0"))
       ->required()
       ->type_name("T");
-  command->add_option("--dt", options->dt, "grid step H [time]; > 0")
+  numeric(command->add_option("--dt", options->dt, "grid step H [time]; > 0"))
       ->required()
       ->type_name("H");
   options->output_option =
@@ -92,7 +88,10 @@ Command add_curve_command(CLI::App& app) {
                     "on both the grid and the boundaries appears once)");
   command->add_flag("--force", options->force, "allow more than 10^9 grid rows");
   command->footer(
-      "Output: '# ...' metadata lines (including '# grid: ...'), then t,x,v,a,phase. At a phase\n"
+      "Computes the exact state at t0, t0 + H, t0 + 2 H, ... (each time computed as t0 + i H,\n"
+      "never accumulated) and at T itself; with --include-events also at every phase boundary.\n"
+      "Output: '# ...' metadata lines (including '# grid: ...'), then t,x,v,a,phase\n"
+      "(t [time], x [length], v [length/time], a [length/time^2]). At a phase\n"
       "boundary the row carries the new phase and its acceleration (right limit); the row at T\n"
       "carries the last phase.\n"
       "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"

@@ -1,8 +1,9 @@
 #include "events.hpp"
 
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <boost/math/constants/constants.hpp>
-#include <fmt/format.h>
 #include <memory>
 
 #include "atomic_output.hpp"
@@ -55,9 +56,8 @@ void run_events(const EventsOptions& options, const Invocation& invocation) {
         options.t_end, phases));
   }
 
-  AtomicOutput out(options.output_option->count() > 0 ? std::optional(options.output)
-                                                      : std::nullopt,
-                   "-o");
+  AtomicOutput out(
+      options.output_option->count() > 0 ? std::optional(options.output) : std::nullopt, "-o");
   if (options.summary) {
     Phase phase;
     while (engine.next(phase)) {
@@ -84,14 +84,10 @@ Summary write_events_csv(std::FILE* out, ExactEngine& engine, const std::string&
 
 Command add_events_command(CLI::App& app) {
   auto options = std::make_shared<EventsOptions>();
-  CLI::App* command = app.add_subcommand(
-      "events",
-      "The exact stick/slip phases from t0 to T as CSV: one row per phase with its kind "
-      "(stick, slip+, slip-) and the time, position and velocity at both ends. Phase "
-      "boundaries are found in closed form or by a bracketed root (no time step); the last "
-      "phase is cut at T.");
+  CLI::App* command =
+      app.add_subcommand("events", "Table of the stick/slip phases from t0 to T (CSV)");
   options->model.add_to(*command);
-  command->add_option("--t-end", options->t_end, "horizon T [time]; > t0")
+  numeric(command->add_option("--t-end", options->t_end, "horizon T [time]; > t0"))
       ->required()
       ->type_name("T");
   options->output_option =
@@ -105,7 +101,11 @@ Command add_events_command(CLI::App& app) {
   command->add_flag("--force", options->force,
                     "allow more than 10^9 estimated phases (4 per forcing period)");
   command->footer(
-      "Output: '# ...' metadata lines, then phase,t_begin,t_end,x_begin,x_end,v_begin,v_end.\n"
+      "Computes every phase of the exact motion: its kind (stick, slip+, slip-) and t, x, v at\n"
+      "both ends. Boundaries come from closed forms and bracketed roots, no time step; the\n"
+      "last phase is cut at T. Streams: memory stays flat for any horizon.\n"
+      "Output: '# ...' metadata lines, then phase,t_begin,t_end,x_begin,x_end,v_begin,v_end\n"
+      "(t [time], x [length], v [length/time]); --summary: one line of key=value instead.\n"
       "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
       "Examples:\n"
       "  frictionref events --lambda 0.7 --t-end 30\n"

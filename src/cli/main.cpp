@@ -1,10 +1,11 @@
 // frictionref: the command-line program. Parses with CLI11, runs the chosen
 // command, and turns every failure into one line on stderr and an exit code
 // (cli_error.hpp; docs/cli.md).
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
-#include <fmt/format.h>
 #include <string>
 #include <vector>
 

@@ -1,17 +1,16 @@
 #include "model_options.hpp"
 
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fmt/format.h>
 
 namespace frictionref::cli {
 
 double parse_number(const TypedNumber& number) {
   const char* begin = number.text.c_str();
   char* end = nullptr;
-  errno = 0;
   const double value = std::strtod(begin, &end);
   // Overflow gives +-inf and underflow a correctly rounded tiny value; both
   // are numbers, and inf is then refused by the finite rule like "inf" itself.
@@ -21,63 +20,54 @@ double parse_number(const TypedNumber& number) {
   return value;
 }
 
+CLI::Option* numeric(CLI::Option* option) {
+  // parse_number throws our own error, which CLI11 lets through unchanged.
+  return option->check([name = option->get_name()](const std::string& text) {
+    parse_number({name, text});
+    return std::string();
+  });
+}
+
 CliError to_bad_input(const InvalidInput& error, const TypedInputs& inputs) {
   const auto typed = inputs.find(error.parameter());
   if (typed == inputs.end()) {
     return bad_input(fmt::format("{} = {}: {}", error.parameter(), error.value(), error.rule()));
   }
-  return bad_input(fmt::format("{} = {}: {}", typed->second.option, typed->second.text,
-                               error.rule()));
+  return bad_input(
+      fmt::format("{} = {}: {}", typed->second.option, typed->second.text, error.rule()));
 }
 
 void ModelOptions::add_to(CLI::App& command) {
   const char* group = "Model (any consistent units; force = mass * length / time^2)";
-  command.add_option("--mass", mass_, "mass m; > 0")
-      ->type_name("M")
-      ->capture_default_str()
-      ->group(group);
-  command.add_option("--amplitude", amplitude_, "amplitude B of the force B sin(w t); >= 0")
-      ->type_name("B")
-      ->capture_default_str()
-      ->group(group);
-  command.add_option("--omega", omega_, "angular frequency w of the force [rad/time]; > 0")
-      ->type_name("W")
-      ->capture_default_str()
-      ->group(group);
+  const auto add = [&](const char* name, std::string& text, const char* help, const char* type) {
+    return numeric(command.add_option(name, text, help))->type_name(type)->group(group);
+  };
+  add("--mass", mass_, "mass m [mass]; > 0", "M")->capture_default_str();
+  add("--amplitude", amplitude_, "amplitude B of the force B sin(w t) [force]; >= 0", "B")
+      ->capture_default_str();
+  add("--omega", omega_, "angular frequency w of the force [rad/time]; > 0", "W")
+      ->capture_default_str();
   friction_option_ =
-      command.add_option("--friction", friction_, "Coulomb friction force R; >= 0 (or --lambda)")
-          ->type_name("R")
-          ->group(group);
-  lambda_option_ = command
-                       .add_option("--lambda", lambda_,
-                                   "friction ratio lambda = R / B; >= 0, needs B > 0 (or --friction)")
-                       ->type_name("L")
-                       ->group(group);
+      add("--friction", friction_, "Coulomb friction force R [force]; >= 0 (or --lambda)", "R");
+  lambda_option_ = add("--lambda", lambda_,
+                       "friction ratio lambda = R / B [1]; >= 0, needs B > 0 (or --friction)", "L");
   friction_option_->excludes(lambda_option_);
-  command.add_option("--x0", x0_, "initial position [length]")
-      ->type_name("X")
-      ->capture_default_str()
-      ->group(group);
-  command.add_option("--v0", v0_, "initial velocity [length/time]")
-      ->type_name("V")
-      ->capture_default_str()
-      ->group(group);
-  command.add_option("--t0", t0_, "initial time [time]; the force is B sin(w t), not B sin(w (t - t0))")
-      ->type_name("T0")
-      ->capture_default_str()
-      ->group(group);
+  add("--x0", x0_, "initial position [length]", "X")->capture_default_str();
+  add("--v0", v0_, "initial velocity [length/time]", "V")->capture_default_str();
+  add("--t0", t0_, "initial time [time]; the force is B sin(w t), not B sin(w (t - t0))", "T0")
+      ->capture_default_str();
 }
 
 bool ModelOptions::lambda_given() const { return lambda_option_ && lambda_option_->count() > 0; }
 
 TypedInputs ModelOptions::typed_inputs() const {
   TypedInputs inputs{
-      {"mass", {"--mass", mass_}}, {"amplitude", {"--amplitude", amplitude_}},
+      {"mass", {"--mass", mass_}},    {"amplitude", {"--amplitude", amplitude_}},
       {"omega", {"--omega", omega_}}, {"x0", {"--x0", x0_}},
-      {"v0", {"--v0", v0_}},         {"t0", {"--t0", t0_}},
+      {"v0", {"--v0", v0_}},          {"t0", {"--t0", t0_}},
   };
-  inputs["friction"] = lambda_given() ? TypedNumber{"--lambda", lambda_}
-                                      : TypedNumber{"--friction", friction_};
+  inputs["friction"] =
+      lambda_given() ? TypedNumber{"--lambda", lambda_} : TypedNumber{"--friction", friction_};
   return inputs;
 }
 

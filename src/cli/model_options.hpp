@@ -35,6 +35,11 @@ using TypedInputs = std::map<std::string, TypedNumber>;
 // Throws bad input "--mass = abc: must be a number".
 double parse_number(const TypedNumber& number);
 
+// Makes CLI11 check, while parsing, that the option's text is a number: a
+// missing value (`--mass --lambda 0.3`, where CLI11 takes "--lambda" as the
+// mass) is then reported against --mass, not as an unexpected "0.3".
+CLI::Option* numeric(CLI::Option* option);
+
 // "--mass = -1: must be > 0": the library's rule with the option and the text
 // the user typed (the library's own field name and value if it was not typed).
 CliError to_bad_input(const InvalidInput& error, const TypedInputs& inputs);

@@ -1,0 +1,132 @@
+// `frictionref reproduce`: the three seed cases on disk and the summary.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "csv_reader.hpp"
+#include "reference_motion.hpp"
+#include "run_binary.hpp"
+#include "test_support.hpp"
+
+namespace frictionref::cli_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Expected {
+  const char* id;
+  const char* folder;
+  double lambda;  // the double the binary uses, as the reference's input
+  double v0;
+  const char* regime;
+};
+
+const Expected seed_cases[] = {
+    {"10.1", "case-10.1-lambda-0.3", 0.3, 0, "continuous"},
+    {"10.2", "case-10.2-lambda-0.7", 0.7, 0, "dead-bands"},
+    {"10.3", "case-10.3-lambda-1.01", 1.01, -1, "stops"},
+};
+
+// No "<name>.tmp.XXXXXX" may survive anywhere below `root`.
+void expect_no_temporary_files(const fs::path& root) {
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << entry.path();
+  }
+}
+
+void check_results(const fs::path& dir, const RunResult& result) {
+  ASSERT_TRUE(succeeded(result));
+  const std::vector<std::string> out = lines(result.out);
+  ASSERT_EQ(out.size(), 4u) << result.out;  // a title line, then one line per case
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Expected& seed = seed_cases[k];
+    SCOPED_TRACE(seed.id);
+    const fs::path folder = dir / seed.folder;
+    ASSERT_TRUE(fs::is_regular_file(folder / "events.csv"));
+    ASSERT_TRUE(fs::is_regular_file(folder / "curve.csv"));
+    ASSERT_TRUE(fs::is_regular_file(folder / "classify.json"));
+    const ReferenceMotion reference(seed.lambda, seed.v0, 30);
+
+    const Csv events = parse_csv(read_file(folder / "events.csv"));
+    EXPECT_EQ(events.header, "phase,t_begin,t_end,x_begin,x_end,v_begin,v_end");
+    ASSERT_EQ(events.rows.size(), reference.phases().size());
+    for (std::size_t i = 0; i < events.rows.size(); ++i) {
+      EXPECT_EQ(events.rows[i][0], reference.phases()[i].kind);
+      EXPECT_NEAR(to_double(events.rows[i][2]), static_cast<double>(reference.phases()[i].t_end),
+                  1e-11);
+    }
+    EXPECT_EQ(to_double(events.rows.back()[2]), 30.0);
+    EXPECT_NE(events.meta("case").find(seed.id), std::string::npos);
+
+    const Csv curve = parse_csv(read_file(folder / "curve.csv"));
+    EXPECT_EQ(curve.header, "t,x,v,a,phase");
+    EXPECT_EQ(curve.rows.size(), 3001u + reference.phases().size() - 1);  // grid + event rows
+    EXPECT_NE(curve.meta("grid").find("dt=0.01 include_events=true"), std::string::npos);
+
+    const nlohmann::json json = nlohmann::json::parse(read_file(folder / "classify.json"));
+    EXPECT_EQ(json.at("regime"), seed.regime);
+    EXPECT_EQ(json.at("case"), seed.id);
+
+    const auto summary = key_values(out[k + 1]);
+    EXPECT_NE(out[k + 1].find(seed.id), std::string::npos) << out[k + 1];
+    EXPECT_EQ(summary.at("regime"), seed.regime);
+    EXPECT_EQ(to_double(summary.at("lambda")), seed.lambda);
+    EXPECT_EQ(to_double(summary.at("v0")), seed.v0);
+    EXPECT_EQ(summary.at("stick"), std::to_string(reference.count("stick")));
+    EXPECT_EQ(summary.at("slip+"), std::to_string(reference.count("slip+")));
+    EXPECT_EQ(summary.at("slip-"), std::to_string(reference.count("slip-")));
+    // Stops: slips ending at v = 0 before T; reversals: those followed at once
+    // by a slip the other way (no stick between).
+    std::size_t stops = 0, reversals = 0;
+    const auto& phases = reference.phases();
+    for (std::size_t i = 0; i + 1 < phases.size(); ++i) {
+      if (phases[i].kind == "stick") continue;
+      ++stops;
+      reversals += phases[i + 1].kind != "stick";
+    }
+    EXPECT_EQ(summary.at("stops"), std::to_string(stops));
+    EXPECT_EQ(summary.at("reversals"), std::to_string(reversals));
+    EXPECT_EQ(to_double(summary.at("t")), 30.0);
+    EXPECT_NEAR(to_double(summary.at("x")), static_cast<double>(reference.phases().back().x_end),
+                1e-11);
+    EXPECT_NE(summary.at("dir").find(seed.folder), std::string::npos);
+  }
+  expect_no_temporary_files(dir);
+}
+
+TEST(Reproduce, DefaultFolderInTheWorkingDirectory) {
+  TempDir cwd;
+  const RunResult result = run_frictionref({"reproduce"}, cwd.path());
+  check_results(cwd.path() / "frictionref-results", result);
+  EXPECT_EQ(cwd.entries(), std::vector<std::string>{"frictionref-results"});
+}
+
+TEST(Reproduce, OutCreatesNestedFolders) {
+  TempDir cwd;
+  const RunResult result = run_frictionref({"reproduce", "--out", "a/b"}, cwd.path());
+  check_results(cwd.path() / "a" / "b", result);
+}
+
+TEST(Reproduce, RunningTwiceReplacesTheFiles) {
+  TempDir cwd;
+  ASSERT_TRUE(succeeded(run_frictionref({"reproduce", "--out", "r"}, cwd.path())));
+  const RunResult again = run_frictionref({"reproduce", "--out", "r"}, cwd.path());
+  check_results(cwd.path() / "r", again);
+}
+
+TEST(Reproduce, UnwritableOutIsBadInput) {
+  TempDir cwd;
+  { std::ofstream(cwd.path() / "file") << "x"; }  // a file where a folder must go
+  const RunResult result = run_frictionref({"reproduce", "--out", "file"}, cwd.path());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(lines(result.err).size(), 1u) << result.err;
+  EXPECT_NE(result.err.find("--out"), std::string::npos) << result.err;
+  EXPECT_EQ(cwd.entries(), std::vector<std::string>{"file"});
+}
+
+}  // namespace
+}  // namespace frictionref::cli_test
