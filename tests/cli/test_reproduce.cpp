@@ -98,6 +98,32 @@ void check_results(const fs::path& dir, const RunResult& result) {
   expect_no_temporary_files(dir);
 }
 
+// The committed case table data/seed-cases.csv (transcribed from the seed)
+// and what `reproduce` runs are the same three cases.
+TEST(Reproduce, RunsExactlyTheCasesOfTheDataTable) {
+  const Csv table = parse_csv(read_file(fs::path(FRICTIONREF_SOURCE_DIR) / "data/seed-cases.csv"));
+  ASSERT_EQ(table.header, "case,lambda,v0,seed_says");
+  ASSERT_EQ(table.rows.size(), 3u);
+  TempDir dir;
+  const RunResult result = run_frictionref({"reproduce", "--out", "r"}, dir.path());
+  ASSERT_TRUE(succeeded(result));
+  const std::vector<std::string> out = lines(result.out);
+  ASSERT_EQ(out.size(), 4u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::vector<std::string>& row = table.rows[k];
+    SCOPED_TRACE(row[0]);
+    EXPECT_EQ(row[0], seed_cases[k].id);
+    EXPECT_EQ(to_double(row[1]), seed_cases[k].lambda);
+    EXPECT_EQ(to_double(row[2]), seed_cases[k].v0);
+    // "case 10.1: lambda=0.3 v0=0 ..."
+    const std::string prefix = "case " + row[0] + ": ";
+    ASSERT_EQ(out[k + 1].rfind(prefix, 0), 0u) << out[k + 1];
+    const auto values = key_values(out[k + 1].substr(prefix.size()));
+    EXPECT_EQ(to_double(values.at("lambda")), to_double(row[1]));
+    EXPECT_EQ(to_double(values.at("v0")), to_double(row[2]));
+  }
+}
+
 TEST(Reproduce, DefaultFolderInTheWorkingDirectory) {
   TempDir cwd;
   const RunResult result = run_frictionref({"reproduce"}, cwd.path());
