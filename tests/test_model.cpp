@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "expect_invalid.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
@@ -19,21 +20,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Runs `validate` and returns the InvalidInput it throws; fails the test if it
-// throws nothing (or something else).
-template <class F>
-InvalidInput expect_invalid(F&& validate) {
-  try {
-    validate();
-  } catch (const InvalidInput& error) {
-    return error;
-  } catch (const std::exception& other) {
-    ADD_FAILURE() << "threw something other than InvalidInput: " << other.what();
-    return InvalidInput("<wrong exception>", "", "");
-  }
-  ADD_FAILURE() << "did not throw";
-  return InvalidInput("<no exception>", "", "");
-}
+using testing::expect_invalid;
 
 // Every field of Model, by name, for table-driven tests.
 struct Field {

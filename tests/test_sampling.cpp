@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "expect_invalid.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
@@ -20,19 +21,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-template <class F>
-InvalidInput expect_invalid(F&& f) {
-  try {
-    f();
-  } catch (const InvalidInput& error) {
-    return error;
-  } catch (const std::exception& other) {
-    ADD_FAILURE() << "threw something other than InvalidInput: " << other.what();
-    return InvalidInput("<wrong exception>", "", "");
-  }
-  ADD_FAILURE() << "did not throw";
-  return InvalidInput("<no exception>", "", "");
-}
+using testing::expect_invalid;
 
 // Seed model: m = B = w = 1, friction R (lambda = R).
 Model seed_model(double friction, double t0 = 0, double v0 = 0, double x0 = 0) {

@@ -1,5 +1,7 @@
 #include "atomic_output.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/stat.h>
@@ -129,6 +131,18 @@ void AtomicOutput::commit() {
 
 void AtomicOutput::fail(const std::string& what) const {
   throw bad_input(fmt::format("{} = {}: {}", option_, *path_, what));
+}
+
+void OutputFileOption::add_to(CLI::App& command) {
+  option_ = command
+                .add_option("-o", path_,
+                            "write to FILE (atomically: complete or not at all) instead of stdout")
+                ->type_name("FILE");
+}
+
+std::optional<std::string> OutputFileOption::path() const {
+  if (option_ == nullptr || option_->count() == 0) return std::nullopt;
+  return path_;
 }
 
 }  // namespace frictionref::cli

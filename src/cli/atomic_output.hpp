@@ -9,7 +9,24 @@
 #include <optional>
 #include <string>
 
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
 namespace frictionref::cli {
+
+// The "-o FILE" option that every writing command takes: absent means stdout.
+class OutputFileOption {
+ public:
+  void add_to(CLI::App& command);
+  // The path if -o was given.
+  std::optional<std::string> path() const;
+
+ private:
+  std::string path_;
+  CLI::Option* option_ = nullptr;
+};
 
 class AtomicOutput {
  public:

@@ -17,8 +17,7 @@ struct CurveOptions {
   ModelOptions model;
   std::string t_end;
   std::string dt;
-  std::string output;
-  CLI::Option* output_option = nullptr;
+  OutputFileOption output;
   bool include_events = false;
   bool force = false;
 };
@@ -43,8 +42,7 @@ void run_curve(const CurveOptions& options, const Invocation& invocation) {
   }
   UniformSampler sampler = naming_options(inputs, [&] { return UniformSampler(model, grid); });
 
-  AtomicOutput out(
-      options.output_option->count() > 0 ? std::optional(options.output) : std::nullopt, "-o");
+  AtomicOutput out(options.output.path(), "-o");
   require_reached_end(write_curve_csv(out.stream(), model, sampler, invocation.command_line,
                                       {grid_metadata(model, grid)}));
   out.commit();
@@ -78,11 +76,7 @@ Command add_curve_command(CLI::App& app) {
   numeric(command->add_option("--dt", options->dt, "grid step H [time]; > 0"))
       ->required()
       ->type_name("H");
-  options->output_option =
-      command
-          ->add_option("-o", options->output,
-                       "write to FILE (atomically: complete or not at all) instead of stdout")
-          ->type_name("FILE");
+  options->output.add_to(*command);
   command->add_flag("--include-events", options->include_events,
                     "also write a row at every phase boundary, so plots keep the kinks (a time "
                     "on both the grid and the boundaries appears once)");

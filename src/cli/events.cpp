@@ -17,8 +17,7 @@ namespace {
 struct EventsOptions {
   ModelOptions model;
   std::string t_end;
-  std::string output;
-  CLI::Option* output_option = nullptr;
+  OutputFileOption output;
   bool summary = false;
   bool force = false;
 };
@@ -56,8 +55,7 @@ void run_events(const EventsOptions& options, const Invocation& invocation) {
         options.t_end, phases));
   }
 
-  AtomicOutput out(
-      options.output_option->count() > 0 ? std::optional(options.output) : std::nullopt, "-o");
+  AtomicOutput out(options.output.path(), "-o");
   if (options.summary) {
     Phase phase;
     while (engine.next(phase)) {
@@ -90,11 +88,7 @@ Command add_events_command(CLI::App& app) {
   numeric(command->add_option("--t-end", options->t_end, "horizon T [time]; > t0"))
       ->required()
       ->type_name("T");
-  options->output_option =
-      command
-          ->add_option("-o", options->output,
-                       "write to FILE (atomically: complete or not at all) instead of stdout")
-          ->type_name("FILE");
+  options->output.add_to(*command);
   command->add_flag("--summary", options->summary,
                     "print one key=value line (counts per phase kind, stops, final state) "
                     "instead of the table");
