@@ -104,3 +104,46 @@ TEST(SeedCases, Lambda101StopsForGood) {
 
 }  // namespace
 }  // namespace frictionref
+
+namespace frictionref {
+namespace {
+
+// Either side of the exact threshold lambda* = 2/sqrt(4 + pi^2) (mpmath
+// literal), 1e-9 away: above, a dead band of ~4.11 (lambda - lambda*) rad
+// (docs/theory.md 5.6) in every half period after the first breakaway;
+// below, once the transient has died out, no stick at all.
+TEST(SeedCases, RegimesAtTheThresholdPlusMinus1e9) {
+  const double lambda_star = 0.53702927214631507685;
+  const double periods = 200;
+  const double t_end = periods * 2 * kPi;
+
+  const Solution above = solve(seed_case(lambda_star + 1e-9, 0), t_end);
+  testing::expect_well_formed(above, t_end);
+  EXPECT_EQ(steady_state(above.model).regime, Regime::dead_bands);
+  EXPECT_NEAR(static_cast<double>(above.summary.count(PhaseKind::stick)), 2 * periods, 1);
+  for (std::size_t i = 1; i + 1 < above.phases.size(); ++i) {
+    const Phase& p = above.phases[i];
+    if (p.kind != PhaseKind::stick) continue;
+    EXPECT_NEAR(p.duration(), 4.1104e-9, 0.05e-9) << "stick " << i << " at " << p.t_begin;
+  }
+
+  const Solution below = solve(seed_case(lambda_star - 1e-9, 0), t_end);
+  testing::expect_well_formed(below, t_end);
+  EXPECT_EQ(steady_state(below.model).regime, Regime::continuous);
+  for (const Phase& p : below.phases) {
+    if (p.t_begin > 50 * 2 * kPi) {
+      EXPECT_NE(p.kind, PhaseKind::stick) << "stick at " << p.t_begin;
+    }
+  }
+  std::printf("lambda* - 1e-9: %llu sticks in %g periods, last ends at t = %.6g\n",
+              static_cast<unsigned long long>(below.summary.count(PhaseKind::stick)), periods,
+              [&] {
+                double last = 0;
+                for (const Phase& p : below.phases)
+                  if (p.kind == PhaseKind::stick) last = p.t_end;
+                return last;
+              }());
+}
+
+}  // namespace
+}  // namespace frictionref
