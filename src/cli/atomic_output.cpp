@@ -20,19 +20,24 @@ namespace {
 
 constexpr std::size_t buffer_bytes = 1 << 16;  // rows are short; fewer write calls
 
-// Ctrl-C or kill during a long run must not leave the temporary file behind:
-// the handler removes it (unlink is async-signal-safe) and then dies of the
-// same signal as it would have without us. One output file is open at a time.
-char pending_temp[4096];
-volatile std::sig_atomic_t have_pending_temp = 0;
+// Ctrl-C or kill during a long run must not leave a temporary file behind:
+// the handler removes every pending one (unlink is async-signal-safe) and then
+// dies of the same signal as it would have without us. A command has at most
+// a few outputs open at once (a table and its figure).
+constexpr int max_pending = 8;
+char pending_temp[max_pending][4096];
+volatile std::sig_atomic_t pending_used[max_pending] = {};
 
 extern "C" void remove_pending_temp(int signal_number) {
-  if (have_pending_temp) unlink(pending_temp);
+  for (int i = 0; i < max_pending; ++i)
+    if (pending_used[i]) unlink(pending_temp[i]);
   std::signal(signal_number, SIG_DFL);
   std::raise(signal_number);
 }
 
-void guard_temp_file(const std::string& path) {
+// Returns the slot that guards `path`, or -1 if none is free (then the file
+// is still removed on every normal exit path, just not on a signal).
+int guard_temp_file(const std::string& path) {
   static const bool installed = [] {
     for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
       // A signal the caller ignores (nohup, background jobs) stays ignored.
@@ -43,14 +48,19 @@ void guard_temp_file(const std::string& path) {
     return true;
   }();
   (void)installed;
-  have_pending_temp = 0;
-  if (path.size() < sizeof pending_temp) {
-    std::memcpy(pending_temp, path.c_str(), path.size() + 1);
-    have_pending_temp = 1;
+  if (path.size() >= sizeof pending_temp[0]) return -1;
+  for (int i = 0; i < max_pending; ++i) {
+    if (pending_used[i]) continue;
+    std::memcpy(pending_temp[i], path.c_str(), path.size() + 1);
+    pending_used[i] = 1;
+    return i;
   }
+  return -1;
 }
 
-void unguard_temp_file() { have_pending_temp = 0; }
+void unguard_temp_file(int slot) {
+  if (slot >= 0) pending_used[slot] = 0;
+}
 
 // mkstemp makes the file 0600; give the result the permissions any newly
 // created file would get (0666 less the umask).
@@ -80,7 +90,7 @@ AtomicOutput::AtomicOutput(std::optional<std::string> path, std::string option)
   const int fd = mkstemp(name.data());
   if (fd < 0) fail(fmt::format("cannot create a file there: {}", std::strerror(errno)));
   temp_path_ = name.data();
-  guard_temp_file(temp_path_);
+  guard_slot_ = guard_temp_file(temp_path_);
   set_default_permissions(fd);
   file_ = fdopen(fd, "w");
   if (!file_) {
@@ -100,7 +110,8 @@ void AtomicOutput::discard() {
   file_ = nullptr;
   if (!temp_path_.empty()) std::remove(temp_path_.c_str());
   temp_path_.clear();
-  unguard_temp_file();
+  unguard_temp_file(guard_slot_);
+  guard_slot_ = -1;
 }
 
 void AtomicOutput::commit() {
@@ -126,7 +137,8 @@ void AtomicOutput::commit() {
     fail(fmt::format("cannot rename the finished file into place: {}", std::strerror(error)));
   }
   temp_path_.clear();
-  unguard_temp_file();
+  unguard_temp_file(guard_slot_);
+  guard_slot_ = -1;
 }
 
 void AtomicOutput::fail(const std::string& what) const {

@@ -38,6 +38,9 @@ class AtomicOutput {
   AtomicOutput& operator=(const AtomicOutput&) = delete;
 
   std::FILE* stream() const { return file_; }
+  // The temporary file's name, for a child process (gnuplot) that writes the
+  // output by name. Empty for standard output.
+  const std::string& temp_path() const { return temp_path_; }
 
   // Flushes, syncs and renames into place (or flushes stdout); throws bad
   // input naming the option on any write error.
@@ -51,6 +54,7 @@ class AtomicOutput {
   std::string option_;
   std::string temp_path_;
   std::FILE* file_ = nullptr;
+  int guard_slot_ = -1;  // signal-handler slot that removes temp_path_
 };
 
 }  // namespace frictionref::cli

@@ -100,7 +100,10 @@ Command add_classify_command(CLI::App& app) {
       "Examples:\n"
       "  frictionref classify --lambda 0.7\n"
       "  frictionref classify --amplitude 2 --friction 1.2 --json");
-  return {command, [options](const Invocation& invocation) { run_classify(*options, invocation); }};
+  return {command, [options](const Invocation& invocation) {
+            run_classify(*options, invocation);
+            return exit_success;
+          }};
 }
 
 }  // namespace frictionref::cli

@@ -22,9 +22,11 @@ struct Invocation {
   std::string command_line;  // argv, shell-quoted, for "# command:"
 };
 
+// run() returns the exit code: exit_success, or exit_compare_failed for a
+// FAIL verdict; errors are thrown as CliError.
 struct Command {
   CLI::App* app = nullptr;
-  std::function<void(const Invocation&)> run;
+  std::function<ExitCode(const Invocation&)> run;
 };
 
 // Larger outputs need --force: a typo in --t-end or --dt must not fill the disk

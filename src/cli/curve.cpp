@@ -20,6 +20,7 @@ struct CurveOptions {
   OutputFileOption output;
   bool include_events = false;
   bool force = false;
+  std::string plot;
 };
 
 void run_curve(const CurveOptions& options, const Invocation& invocation) {
@@ -40,11 +41,18 @@ void run_curve(const CurveOptions& options, const Invocation& invocation) {
         "write them anyway",
         options.dt, options.t_end, rows));
   }
+  if (!options.plot.empty()) require_figure_path(options.plot, "--plot");
   UniformSampler sampler = naming_options(inputs, [&] { return UniformSampler(model, grid); });
 
   AtomicOutput out(options.output.path(), "-o");
+  FigureSamples samples(rows);
+  std::function<void(const State&)> observe;
+  if (!options.plot.empty()) observe = [&](const State& state) { samples.add(state); };
   require_reached_end(write_curve_csv(out.stream(), model, sampler, invocation.command_line,
-                                      {grid_metadata(model, grid)}));
+                                      {grid_metadata(model, grid)}, observe));
+  // The figure first: if gnuplot fails, the table is not committed either.
+  if (!options.plot.empty())
+    write_figure(exact_curve_figure(model, samples.states()), options.plot, "--plot");
   out.commit();
 }
 
@@ -56,13 +64,43 @@ std::string grid_metadata(const Model& model, const GridOptions& grid) {
 }
 
 Summary write_curve_csv(std::FILE* out, const Model& model, UniformSampler& sampler,
-                        const std::string& command,
-                        const std::vector<std::string>& extra_metadata) {
+                        const std::string& command, const std::vector<std::string>& extra_metadata,
+                        const std::function<void(const State&)>& observe) {
   write_metadata(out, model, command, extra_metadata);
   write_state_header(out);
   State state;
-  while (sampler.next(state)) write_state_row(out, state);
+  while (sampler.next(state)) {
+    write_state_row(out, state);
+    if (observe) observe(state);
+  }
   return sampler.engine_summary();
+}
+
+void FigureSamples::add(const State& state) {
+  const bool kink = !states_.empty() && states_.back().phase != state.phase;
+  if (seen_++ % stride_ == 0 || kink) states_.push_back(state);
+}
+
+std::string model_title(const Model& model) {
+  return fmt::format("m={} B={} w={} R={} (lambda={}) x0={} v0={} t0={}", model.mass,
+                     model.amplitude, model.omega, model.friction, model.lambda(), model.x0,
+                     model.v0, model.t0);
+}
+
+Figure exact_curve_figure(const Model& model, const std::vector<State>& states) {
+  Series velocity{"exact", {}, {}, Series::Role::reference};
+  Series position{"exact", {}, {}, Series::Role::reference};
+  for (const State& s : states) {
+    velocity.x.push_back(s.t);
+    velocity.y.push_back(s.v);
+    position.x.push_back(s.t);
+    position.y.push_back(s.x);
+  }
+  Figure figure;
+  figure.title = "frictionref exact solution: " + model_title(model);
+  figure.panels.push_back(make_panel("velocity", "t [time]", "v [length/time]", {velocity}));
+  figure.panels.push_back(make_panel("position", "t [time]", "x [length]", {position}));
+  return figure;
 }
 
 Command add_curve_command(CLI::App& app) {
@@ -81,6 +119,10 @@ Command add_curve_command(CLI::App& app) {
                     "also write a row at every phase boundary, so plots keep the kinks (a time "
                     "on both the grid and the boundaries appears once)");
   command->add_flag("--force", options->force, "allow more than 10^9 grid rows");
+  command->add_option("--plot", options->plot,
+                      "also draw velocity and position against time into FILE (.svg or .png; "
+                      "needs gnuplot)")
+      ->type_name("FILE");
   command->footer(
       "Computes the exact state at t0, t0 + H, t0 + 2 H, ... (each time computed as t0 + i H,\n"
       "never accumulated) and at T itself; with --include-events also at every phase boundary.\n"
@@ -92,7 +134,10 @@ Command add_curve_command(CLI::App& app) {
       "Examples:\n"
       "  frictionref curve --lambda 0.7 --t-end 30 --dt 0.01 --include-events -o curve.csv\n"
       "  frictionref curve --friction 0.3 --t0 -5 --t-end 5 --dt 0.5");
-  return {command, [options](const Invocation& invocation) { run_curve(*options, invocation); }};
+  return {command, [options](const Invocation& invocation) {
+            run_curve(*options, invocation);
+            return exit_success;
+          }};
 }
 
 }  // namespace frictionref::cli

@@ -106,7 +106,10 @@ Command add_events_command(CLI::App& app) {
       "  frictionref events --mass 2 --amplitude 5 --omega 3 --friction 1.5 --v0 -1 --t-end 100 "
       "-o events.csv\n"
       "  frictionref events --lambda 0.3 --t-end 1e6 --summary");
-  return {command, [options](const Invocation& invocation) { run_events(*options, invocation); }};
+  return {command, [options](const Invocation& invocation) {
+            run_events(*options, invocation);
+            return exit_success;
+          }};
 }
 
 }  // namespace frictionref::cli

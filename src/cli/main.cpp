@@ -19,7 +19,8 @@ namespace frictionref::cli {
 namespace {
 
 constexpr const char* usage =
-    "usage: frictionref {events|curve|reproduce|classify} [options] (see frictionref --help)";
+    "usage: frictionref {events|curve|classify|reproduce} [options] "
+    "(see frictionref --help)";
 
 // Scripts read stderr line by line: whatever the message, it is one line.
 int report(ExitCode code, std::string message) {
@@ -70,8 +71,9 @@ int run(int argc, char** argv) {
       "  frictionref reproduce --out results\n"
       "'frictionref <command> --help' explains each command; docs/cli.md has the formats.");
 
-  const std::vector<Command> commands{add_events_command(app), add_curve_command(app),
-                                      add_reproduce_command(app), add_classify_command(app)};
+  const std::vector<Command> commands{
+      add_events_command(app), add_curve_command(app), add_reproduce_command(app),
+      add_classify_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& help_or_version) {
@@ -82,10 +84,7 @@ int run(int argc, char** argv) {
 
   const Invocation invocation{command_line(argc, argv)};
   for (const Command& command : commands) {
-    if (command.app->parsed()) {
-      command.run(invocation);
-      return exit_success;
-    }
+    if (command.app->parsed()) return command.run(invocation);
   }
   return report(exit_bad_input, std::string("a command is required; ") + usage);
 }

@@ -152,7 +152,10 @@ Command add_reproduce_command(CLI::App& app) {
       "Example:\n"
       "  frictionref reproduce --out results && head results/case-10.2-lambda-0.7/events.csv");
   return {command,
-          [options](const Invocation& invocation) { run_reproduce(*options, invocation); }};
+          [options](const Invocation& invocation) {
+            run_reproduce(*options, invocation);
+            return exit_success;
+          }};
 }
 
 }  // namespace frictionref::cli

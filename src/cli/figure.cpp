@@ -1,0 +1,195 @@
+#include "figure.hpp"
+
+#include <fmt/format.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "atomic_output.hpp"
+#include "cli_error.hpp"
+
+extern char** environ;
+
+namespace frictionref::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+bool gnuplot_on_path() {
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / "gnuplot";
+    if (access(candidate.c_str(), X_OK) == 0) return true;
+  }
+  return false;
+}
+
+// A gnuplot string literal: double quotes, with \ and " escaped.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// A scratch file in the system temporary directory, removed at scope exit.
+class ScratchFile {
+ public:
+  explicit ScratchFile(const char* stem) {
+    std::string name = (fs::temp_directory_path() / (std::string(stem) + ".XXXXXX")).string();
+    const int fd = mkstemp(name.data());
+    if (fd < 0) throw bad_input(fmt::format("cannot create a temporary file for gnuplot: {}",
+                                            std::strerror(errno)));
+    close(fd);
+    path_ = name;
+  }
+  ~ScratchFile() { std::remove(path_.c_str()); }
+  ScratchFile(const ScratchFile&) = delete;
+  ScratchFile& operator=(const ScratchFile&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+const char* const candidate_colours[] = {"#d62728", "#1f77b4", "#2ca02c", "#ff7f0e", "#9467bd"};
+
+// One block per series, blocks separated by two blank lines (gnuplot "index").
+void write_data(const Figure& figure, const std::string& path) {
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if (!out) throw bad_input("cannot write gnuplot's data file");
+  for (const Panel& panel : figure.panels) {
+    for (const Series& series : panel.series) {
+      for (std::size_t i = 0; i < series.x.size() && i < series.y.size(); ++i)
+        std::fprintf(out, "%.17g %.17g\n", series.x[i], series.y[i]);
+      if (series.x.empty()) std::fprintf(out, "nan nan\n");  // keeps the index count right
+      std::fprintf(out, "\n\n");
+    }
+  }
+  const bool ok = std::fclose(out) == 0;
+  if (!ok) throw bad_input("cannot write gnuplot's data file");
+}
+
+std::string script(const Figure& figure, const std::string& data, const std::string& output,
+                   bool svg) {
+  const int height = figure.panel_height * static_cast<int>(figure.panels.size()) +
+                     (figure.title.empty() ? 0 : 40);
+  std::string s;
+  s += svg ? fmt::format("set terminal svg size {},{} dynamic noenhanced font 'Sans,12' "
+                         "background rgb 'white'\n",
+                         figure.width, height)
+           : fmt::format("set terminal pngcairo size {},{} noenhanced font 'Sans,10'\n",
+                         figure.width, height);
+  s += "set output " + quoted(output) + "\n";
+  s += "set grid lc rgb '#dddddd'\nset key top right box opaque\nset datafile missing 'nan'\n";
+  s += fmt::format("set multiplot layout {},1 title {}\n", figure.panels.size(),
+                   quoted(figure.title));
+  int block = 0;
+  for (const Panel& panel : figure.panels) {
+    s += "set title " + quoted(panel.title) + "\n";
+    s += "set xlabel " + quoted(panel.x_label) + "\n";
+    s += "set ylabel " + quoted(panel.y_label) + "\n";
+    s += panel.log_x ? "set logscale x\n" : "unset logscale x\n";
+    s += panel.log_y ? "set logscale y\n" : "unset logscale y\n";
+    s += "unset arrow\n";
+    for (double x : panel.vertical_lines)
+      s += fmt::format("set arrow from {:.17g}, graph 0 to {:.17g}, graph 1 nohead dt 2 lc rgb "
+                       "'#555555'\n",
+                       x, x);
+    std::string plots;
+    int colour = 0;
+    for (const Series& series : panel.series) {
+      std::string style;
+      if (series.role == Series::Role::reference) {
+        style = series.points ? "with points pt 7 ps 0.5 lc rgb '#000000'"
+                              : "with lines lw 3 lc rgb '#000000'";
+      } else if (series.role == Series::Role::marker) {
+        style = "with points pt 6 ps 1.2 lc rgb '#555555'";
+      } else {
+        const char* c = candidate_colours[colour++ % 5];
+        style = series.points ? fmt::format("with points pt 7 ps 0.4 lc rgb '{}'", c)
+                              : fmt::format("with lines lw 1.5 dt 2 lc rgb '{}'", c);
+      }
+      if (!plots.empty()) plots += ", \\\n     ";
+      plots += fmt::format("{} index {} using 1:2 {} title {}", quoted(data), block++, style,
+                           series.title.empty() ? "''" : quoted(series.title));
+    }
+    s += plots.empty() ? "plot NaN notitle\n" : "plot " + plots + "\n";
+  }
+  s += "unset multiplot\nunset output\n";
+  return s;
+}
+
+}  // namespace
+
+void require_figure_path(const std::string& path, const std::string& option) {
+  if (!ends_with(path, ".svg") && !ends_with(path, ".png"))
+    throw bad_input(fmt::format("{} = {}: must end in .svg or .png", option, path));
+  if (!gnuplot_on_path())
+    throw bad_input(fmt::format("{} = {}: gnuplot is needed for figures and was not found on "
+                                "PATH (Debian: apt-get install gnuplot-nox)",
+                                option, path));
+}
+
+void write_figure(const Figure& figure, const std::string& path, const std::string& option) {
+  require_figure_path(path, option);
+  AtomicOutput output(path, option);  // gnuplot writes into its temporary file by name
+  ScratchFile data("frictionref-plot-data");
+  ScratchFile commands("frictionref-plot-script");
+  ScratchFile messages("frictionref-plot-messages");
+  write_data(figure, data.path());
+  {
+    std::ofstream out(commands.path());
+    out << script(figure, data.path(), output.temp_path(), ends_with(path, ".svg"));
+    if (!out) throw bad_input("cannot write gnuplot's script file");
+  }
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, messages.path().c_str(), O_WRONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  std::string program = "gnuplot";
+  std::string script_path = commands.path();
+  char* argv[] = {program.data(), script_path.data(), nullptr};
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0)
+    throw bad_input(fmt::format("{} = {}: cannot run gnuplot: {}", option, path,
+                                std::strerror(spawned)));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::ifstream in(messages.path());
+    std::string first_line;
+    std::getline(in, first_line);
+    throw bad_input(fmt::format("{} = {}: gnuplot failed: {}", option, path,
+                                first_line.empty() ? "no message" : first_line));
+  }
+  std::error_code error;
+  if (fs::file_size(output.temp_path(), error) == 0 || error)
+    throw bad_input(fmt::format("{} = {}: gnuplot wrote nothing", option, path));
+  output.commit();
+}
+
+}  // namespace frictionref::cli
