@@ -47,11 +47,10 @@ std::string shell_quote(const std::string& word) {
 }  // namespace
 
 std::string command_line(int argc, const char* const* argv) {
-  std::string line;
-  for (int i = 0; i < argc; ++i) {
-    if (i > 0) line += ' ';
-    line += shell_quote(argv[i]);
-  }
+  // The program by its name, not the path it was run from: the metadata of
+  // a file must not depend on where the binary happened to be built.
+  std::string line = "frictionref";
+  for (int i = 1; i < argc; ++i) line += ' ' + shell_quote(argv[i]);
   return line;
 }
 

@@ -18,7 +18,8 @@ std::string number(double value);
 // "mass=1 amplitude=1 omega=1 friction=0.3 lambda=0.3 x0=0 v0=0 t0=0"
 std::string model_fields(const Model& model);
 
-// The command line as one shell-quoted line, for "# command:" (re-runnable).
+// The command line as one shell-quoted line, for "# command:" (re-runnable):
+// "frictionref <args>", argv[0] replaced by the program's name.
 std::string command_line(int argc, const char* const* argv);
 
 // "# frictionref <version>", "# model: ...", "# command: ...", then one
