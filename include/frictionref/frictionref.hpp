@@ -2,11 +2,14 @@
 #pragma once
 
 #include "frictionref/closed_form.hpp"
+#include "frictionref/comparison.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
 #include "frictionref/phase.hpp"
 #include "frictionref/sampling.hpp"
 #include "frictionref/steady_state.hpp"
+#include "frictionref/stiff_spring.hpp"
+#include "frictionref/time_history.hpp"
 #include "frictionref/types.hpp"
 #include "frictionref/version.hpp"
