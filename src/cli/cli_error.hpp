@@ -10,7 +10,7 @@ namespace frictionref::cli {
 // Scripts depend on these values (docs/cli.md); never renumber them.
 enum ExitCode : int {
   exit_success = 0,
-  exit_compare_failed = 1,  // reserved for the `compare` verdict FAIL
+  exit_compare_failed = 1,  // `compare`: the candidate failed a check (verdict FAIL)
   exit_bad_input = 2,       // bad option, value or output path: fix the command line
   exit_internal_error = 3,  // a broken engine invariant: please report
 };

@@ -45,5 +45,8 @@ Command add_events_command(CLI::App& app);
 Command add_curve_command(CLI::App& app);
 Command add_reproduce_command(CLI::App& app);
 Command add_classify_command(CLI::App& app);
+Command add_stiff_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
+Command add_convergence_command(CLI::App& app);
 
 }  // namespace frictionref::cli

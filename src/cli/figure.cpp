@@ -29,16 +29,6 @@ bool ends_with(const std::string& text, const std::string& suffix) {
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-bool gnuplot_on_path() {
-  const char* path = std::getenv("PATH");
-  std::stringstream dirs(path ? path : "/usr/bin:/bin");
-  std::string dir;
-  while (std::getline(dirs, dir, ':')) {
-    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / "gnuplot";
-    if (access(candidate.c_str(), X_OK) == 0) return true;
-  }
-  return false;
-}
 
 // A gnuplot string literal: double quotes, with \ and " escaped.
 std::string quoted(const std::string& text) {
@@ -100,6 +90,7 @@ std::string script(const Figure& figure, const std::string& data, const std::str
                          figure.width, height);
   s += "set output " + quoted(output) + "\n";
   s += "set grid lc rgb '#dddddd'\nset key top right box opaque\nset datafile missing 'nan'\n";
+  s += "set autoscale\n";
   s += fmt::format("set multiplot layout {},1 title {}\n", figure.panels.size(),
                    quoted(figure.title));
   int block = 0;
@@ -107,8 +98,8 @@ std::string script(const Figure& figure, const std::string& data, const std::str
     s += "set title " + quoted(panel.title) + "\n";
     s += "set xlabel " + quoted(panel.x_label) + "\n";
     s += "set ylabel " + quoted(panel.y_label) + "\n";
-    s += panel.log_x ? "set logscale x\n" : "unset logscale x\n";
-    s += panel.log_y ? "set logscale y\n" : "unset logscale y\n";
+    s += panel.log_x ? "set logscale x\nset format x '%.0e'\n" : "unset logscale x\nset format x '% h'\n";
+    s += panel.log_y ? "set logscale y\nset format y '%.0e'\n" : "unset logscale y\nset format y '% h'\n";
     s += "unset arrow\n";
     for (double x : panel.vertical_lines)
       s += fmt::format("set arrow from {:.17g}, graph 0 to {:.17g}, graph 1 nohead dt 2 lc rgb "
@@ -125,8 +116,9 @@ std::string script(const Figure& figure, const std::string& data, const std::str
         style = "with points pt 6 ps 1.2 lc rgb '#555555'";
       } else {
         const char* c = candidate_colours[colour++ % 5];
-        style = series.points ? fmt::format("with points pt 7 ps 0.4 lc rgb '{}'", c)
-                              : fmt::format("with lines lw 1.5 dt 2 lc rgb '{}'", c);
+        style = series.points    ? fmt::format("with points pt 7 ps 0.4 lc rgb '{}'", c)
+                : series.markers ? fmt::format("with linespoints lw 1.5 pt 7 ps 0.8 lc rgb '{}'", c)
+                                 : fmt::format("with lines lw 1.2 lc rgb '{}'", c);
       }
       if (!plots.empty()) plots += ", \\\n     ";
       plots += fmt::format("{} index {} using 1:2 {} title {}", quoted(data), block++, style,
@@ -140,10 +132,21 @@ std::string script(const Figure& figure, const std::string& data, const std::str
 
 }  // namespace
 
+bool gnuplot_available() {
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / "gnuplot";
+    if (access(candidate.c_str(), X_OK) == 0) return true;
+  }
+  return false;
+}
+
 void require_figure_path(const std::string& path, const std::string& option) {
   if (!ends_with(path, ".svg") && !ends_with(path, ".png"))
     throw bad_input(fmt::format("{} = {}: must end in .svg or .png", option, path));
-  if (!gnuplot_on_path())
+  if (!gnuplot_available())
     throw bad_input(fmt::format("{} = {}: gnuplot is needed for figures and was not found on "
                                 "PATH (Debian: apt-get install gnuplot-nox)",
                                 option, path));

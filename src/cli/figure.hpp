@@ -17,6 +17,7 @@ struct Series {
   // other series cycle through thinner coloured lines (or points).
   enum class Role { reference, candidate, marker } role = Role::candidate;
   bool points = false;       // points instead of a line
+  bool markers = false;      // a line with a marker at every point (sparse data)
 };
 
 struct Panel {
@@ -44,6 +45,9 @@ struct Figure {
   int width = 900;    // pixels; height grows with the panels
   int panel_height = 360;
 };
+
+// True if a gnuplot executable is on PATH.
+bool gnuplot_available();
 
 // Throws bad input (cli_error.hpp) naming `option` unless `path` ends in .svg
 // or .png, and unless gnuplot can be run. Call before computing anything, so

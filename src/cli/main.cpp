@@ -19,7 +19,7 @@ namespace frictionref::cli {
 namespace {
 
 constexpr const char* usage =
-    "usage: frictionref {events|curve|classify|reproduce} [options] "
+    "usage: frictionref {events|curve|classify|reproduce|stiff|compare|convergence} [options] "
     "(see frictionref --help)";
 
 // Scripts read stderr line by line: whatever the message, it is one line.
@@ -62,18 +62,22 @@ int run(int argc, char** argv) {
       "--friction R or --lambda L (R = L * B) is required.\n"
       "Output goes to stdout, or with -o FILE atomically to FILE; numbers are printed in the\n"
       "shortest form that reads back to the same double.\n"
-      "Exit codes: 0 success; 1 reserved (compare: FAIL); 2 bad input or unwritable output\n"
+      "Exit codes: 0 success; 1 compare: verdict FAIL; 2 bad input or unwritable output\n"
       "(one line on stderr naming the option, no output file); 3 internal error (please report).\n"
       "Examples:\n"
       "  frictionref classify --lambda 0.7\n"
       "  frictionref events --lambda 0.3 --t-end 30 -o events.csv\n"
       "  frictionref curve --lambda 0.7 --t-end 30 --dt 0.01 --include-events\n"
       "  frictionref reproduce --out results\n"
+      "  frictionref stiff --lambda 0.7 --t-end 30 --kf 1e7 -o stiff.csv\n"
+      "  frictionref compare --lambda 0.7 --candidate stiff.csv --plot compare.svg\n"
+      "  frictionref convergence --lambda 0.7 --format markdown\n"
       "'frictionref <command> --help' explains each command; docs/cli.md has the formats.");
 
   const std::vector<Command> commands{
-      add_events_command(app), add_curve_command(app), add_reproduce_command(app),
-      add_classify_command(app)};
+      add_events_command(app),  add_curve_command(app),   add_reproduce_command(app),
+      add_classify_command(app), add_stiff_command(app),  add_compare_command(app),
+      add_convergence_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& help_or_version) {

@@ -86,5 +86,21 @@ TEST(Figures, MissingGnuplotIsOneClearLineAndNoFiles) {
   EXPECT_TRUE(dir.entries().empty());
 }
 
+// reproduce draws figures by default: without gnuplot it says how to get it,
+// or how to do without (--no-figures), and writes nothing.
+TEST(Figures, ReproduceWithoutGnuplotNamesTheWayOut) {
+  TempDir dir;
+  RunResult result;
+  {
+    PathWithoutGnuplot no_gnuplot;
+    result = run_frictionref({"reproduce", "--out", "r"}, dir.path());
+  }
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_NE(result.err.find("gnuplot"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("--no-figures"), std::string::npos) << result.err;
+  EXPECT_TRUE(dir.entries().empty());
+}
+
 }  // namespace
 }  // namespace frictionref::cli_test

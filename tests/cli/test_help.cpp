@@ -23,7 +23,8 @@ TEST(Help, App) {
   for (const char* flag : {"--help", "-h"}) {
     const RunResult result = run_frictionref({flag});
     ASSERT_TRUE(succeeded(result));
-    for (const char* part : {"events", "curve", "reproduce", "classify", "Exit codes",
+    for (const char* part : {"events", "curve", "reproduce", "classify", "stiff", "compare",
+                             "convergence", "Exit codes",
                              "2 bad input", "3 internal error", "--version", "Example"}) {
       EXPECT_TRUE(contains(result.out, part)) << part;
     }
@@ -31,7 +32,8 @@ TEST(Help, App) {
 }
 
 TEST(Help, EveryCommand) {
-  for (const char* command : {"events", "curve", "reproduce", "classify"}) {
+  for (const char* command :
+       {"events", "curve", "reproduce", "classify", "stiff", "compare", "convergence"}) {
     SCOPED_TRACE(command);
     const RunResult result = run_frictionref({command, "--help"});
     ASSERT_TRUE(succeeded(result));

@@ -38,10 +38,35 @@ void expect_no_temporary_files(const fs::path& root) {
   }
 }
 
-void check_results(const fs::path& dir, const RunResult& result) {
+// The summary's title line and its "case ..." lines (figure lines dropped).
+std::vector<std::string> case_lines(const std::string& out) {
+  std::vector<std::string> kept;
+  for (const std::string& line : lines(out))
+    if (line.rfind("  figure: ", 0) != 0) kept.push_back(line);
+  return kept;
+}
+
+// The "  figure: <path>" lines of the summary.
+std::vector<std::string> figure_lines(const std::string& out) {
+  std::vector<std::string> figures;
+  for (const std::string& line : lines(out))
+    if (line.rfind("  figure: ", 0) == 0) figures.push_back(line.substr(10));
+  return figures;
+}
+
+bool is_svg(const std::string& content) {
+  return content.find("<svg") != std::string::npos && content.find("</svg>") != std::string::npos;
+}
+bool is_png(const std::string& content) {
+  return content.size() > 100 && content.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
+}
+
+void check_results(const fs::path& dir, const RunResult& result, bool figures = true) {
   ASSERT_TRUE(succeeded(result));
-  const std::vector<std::string> out = lines(result.out);
+  const std::vector<std::string> out = case_lines(result.out);
   ASSERT_EQ(out.size(), 4u) << result.out;  // a title line, then one line per case
+  // velocity.{svg,png} per case, and residual-velocity.{svg,png} for 10.3.
+  EXPECT_EQ(figure_lines(result.out).size(), figures ? 8u : 0u) << result.out;
   for (std::size_t k = 0; k < 3; ++k) {
     const Expected& seed = seed_cases[k];
     SCOPED_TRACE(seed.id);
@@ -49,7 +74,36 @@ void check_results(const fs::path& dir, const RunResult& result) {
     ASSERT_TRUE(fs::is_regular_file(folder / "events.csv"));
     ASSERT_TRUE(fs::is_regular_file(folder / "curve.csv"));
     ASSERT_TRUE(fs::is_regular_file(folder / "classify.json"));
+    ASSERT_TRUE(fs::is_regular_file(folder / "stiff.csv"));
+    ASSERT_TRUE(fs::is_regular_file(folder / "compare.txt"));
     const ReferenceMotion reference(seed.lambda, seed.v0, 30);
+
+    // The seed's stiff-spring run (K_f = 1e7): archived every 0.01 to T,
+    // and judged PASS against the exact solution, as the seed concludes.
+    const Csv stiff = parse_csv(read_file(folder / "stiff.csv"));
+    EXPECT_EQ(stiff.header, "t,x,v");
+    EXPECT_EQ(stiff.rows.size(), 3001u);
+    EXPECT_NE(stiff.meta("stiff").find("kf=10000000"), std::string::npos);
+    const std::string report = read_file(folder / "compare.txt");
+    EXPECT_NE(report.find("verdict: PASS"), std::string::npos) << report;
+
+    const bool zoom = std::string(seed.id) == "10.3";
+    for (const char* name : {"velocity.svg", "velocity.png", "residual-velocity.svg",
+                             "residual-velocity.png"}) {
+      const bool expected = figures && (zoom || std::string(name).rfind("velocity", 0) == 0);
+      EXPECT_EQ(fs::exists(folder / name), expected) << name;
+      if (!expected) continue;
+      const std::string content = read_file(folder / name);
+      EXPECT_TRUE(std::string(name).find(".svg") != std::string::npos ? is_svg(content)
+                                                                       : is_png(content))
+          << name;
+    }
+    if (figures) {
+      const std::string svg = read_file(folder / "velocity.svg");
+      EXPECT_NE(svg.find(std::string("Figure ") + seed.id), std::string::npos);
+      EXPECT_NE(svg.find("exact (frictionref)"), std::string::npos);
+      EXPECT_NE(svg.find("v [length/time]"), std::string::npos);
+    }
 
     const Csv events = parse_csv(read_file(folder / "events.csv"));
     EXPECT_EQ(events.header, "phase,t_begin,t_end,x_begin,x_end,v_begin,v_end");
@@ -94,6 +148,7 @@ void check_results(const fs::path& dir, const RunResult& result) {
     EXPECT_NEAR(to_double(summary.at("x")), static_cast<double>(reference.phases().back().x_end),
                 1e-11);
     EXPECT_NE(summary.at("dir").find(seed.folder), std::string::npos);
+    EXPECT_EQ(summary.at("stiff_vs_exact"), "PASS");
   }
   expect_no_temporary_files(dir);
 }
@@ -107,7 +162,7 @@ TEST(Reproduce, RunsExactlyTheCasesOfTheDataTable) {
   TempDir dir;
   const RunResult result = run_frictionref({"reproduce", "--out", "r"}, dir.path());
   ASSERT_TRUE(succeeded(result));
-  const std::vector<std::string> out = lines(result.out);
+  const std::vector<std::string> out = case_lines(result.out);
   ASSERT_EQ(out.size(), 4u);
   for (std::size_t k = 0; k < 3; ++k) {
     const std::vector<std::string>& row = table.rows[k];
@@ -122,6 +177,12 @@ TEST(Reproduce, RunsExactlyTheCasesOfTheDataTable) {
     EXPECT_EQ(to_double(values.at("lambda")), to_double(row[1]));
     EXPECT_EQ(to_double(values.at("v0")), to_double(row[2]));
   }
+}
+
+TEST(Reproduce, NoFiguresWritesTheTablesOnly) {
+  TempDir cwd;
+  const RunResult result = run_frictionref({"reproduce", "--out", "r", "--no-figures"}, cwd.path());
+  check_results(cwd.path() / "r", result, /*figures=*/false);
 }
 
 TEST(Reproduce, DefaultFolderInTheWorkingDirectory) {
