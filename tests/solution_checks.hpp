@@ -10,6 +10,14 @@
 
 namespace frictionref::testing {
 
+// The seed problem's model: m = B = w = 1, R = lambda, from (x0, v0) = (0, v0) at t0 = 0.
+inline Model seed_model(double lambda, double v0 = 0) {
+  Model model;
+  model.friction = lambda;
+  model.v0 = v0;
+  return model;
+}
+
 inline std::string describe(const Model& m) {
   char text[256];
   std::snprintf(text, sizeof text, "m=%.17g B=%.17g w=%.17g R=%.17g x0=%.17g v0=%.17g t0=%.17g",

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "expect_invalid.hpp"
+#include "solution_checks.hpp"
 #include "frictionref/comparison.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
@@ -26,15 +27,10 @@
 namespace frictionref {
 namespace {
 
+using testing::seed_model;
+
 using testing::expect_invalid;
 
-// Seed model: m = B = w = 1, R = lambda.
-Model seed_model(double lambda, double v0 = 0) {
-  Model model;
-  model.friction = lambda;
-  model.v0 = v0;
-  return model;
-}
 
 // Sample times t0 + i dt up to t_end (i counted, never accumulated).
 std::vector<double> grid(double t0, double t_end, double dt) {

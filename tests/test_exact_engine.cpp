@@ -11,6 +11,8 @@
 namespace frictionref {
 namespace {
 
+using testing::seed_model;
+
 // mpmath, 40 digits, lambda the double nearest 0.7 / 0.3:
 //   asin(0.7); findroot(cos(a) - cos(t) - 0.7 (t - a), pi); acos(0.3 pi / 2)
 const long double kBreakaway07 = 0.7753974966107530015554257442371730995078L;
@@ -23,15 +25,9 @@ double ulps_apart(double a, double b) {
   return std::fabs(a - b) / ulp;
 }
 
-Model seed(double lambda, double v0 = 0) {
-  Model m;
-  m.friction = lambda;
-  m.v0 = v0;
-  return m;
-}
 
 TEST(ExactEngine, StreamMatchesSolve) {
-  const Model m = seed(0.7, 0.25);
+  const Model m = seed_model(0.7, 0.25);
   const Solution s = solve(m, 100.0);
   ExactEngine engine(m, 100.0);
   Phase p;
@@ -52,7 +48,7 @@ TEST(ExactEngine, StreamMatchesSolve) {
 TEST(ExactEngine, PhaseLimitIsAStatus) {
   SolveOptions options;
   options.max_phases = 5;
-  const Solution s = solve(seed(0.7), 1000.0, options);
+  const Solution s = solve(seed_model(0.7), 1000.0, options);
   EXPECT_EQ(s.phases.size(), 5u);
   EXPECT_EQ(s.summary.termination, Termination::phase_limit);
   EXPECT_FALSE(s.summary.message.empty());
@@ -60,7 +56,7 @@ TEST(ExactEngine, PhaseLimitIsAStatus) {
 }
 
 TEST(ExactEngine, RejectsBadHorizonAndModel) {
-  const Model m = seed(0.3);
+  const Model m = seed_model(0.3);
   for (double t_end : {0.0, -1.0, std::nan(""), HUGE_VAL}) {
     try {
       ExactEngine engine(m, t_end);
@@ -78,7 +74,7 @@ TEST(ExactEngine, RejectsBadHorizonAndModel) {
 }
 
 TEST(ExactEngine, SummaryCountsAddUp) {
-  const Solution s = solve(seed(0.7), 200.0);
+  const Solution s = solve(seed_model(0.7), 200.0);
   const Summary& sum = s.summary;
   EXPECT_EQ(sum.count(PhaseKind::stick) + sum.count(PhaseKind::slip_forward) +
                 sum.count(PhaseKind::slip_backward),
@@ -96,7 +92,7 @@ TEST(ExactEngine, SummaryCountsAddUp) {
 // 4 ulps however long the horizon (it does not accumulate).
 TEST(ExactEngine, LongHorizonDeadBandsStayWithinFourUlps) {
   const double periods = 1e5;
-  ExactEngine engine(seed(0.7), periods * 2 * 3.141592653589793);
+  ExactEngine engine(seed_model(0.7), periods * 2 * 3.141592653589793);
   Phase p;
   double worst = 0;
   long k_worst = -1;
@@ -123,7 +119,7 @@ TEST(ExactEngine, LongHorizonDeadBandsStayWithinFourUlps) {
 // reversals lock to tau1 + k pi, cos(tau1) = lambda pi / 2.
 TEST(ExactEngine, LongHorizonContinuousLocksToReversalPhase) {
   const double periods = 1e5;
-  ExactEngine engine(seed(0.3), periods * 2 * 3.141592653589793);
+  ExactEngine engine(seed_model(0.3), periods * 2 * 3.141592653589793);
   Phase p;
   double worst = 0;
   std::uint64_t checked = 0;

@@ -10,19 +10,15 @@
 namespace frictionref {
 namespace {
 
+using testing::seed_model;
+
 const double kPi = 3.141592653589793;
 
-Model seed_case(double lambda, double v0) {
-  Model m;
-  m.friction = lambda;
-  m.v0 = v0;
-  return m;
-}
 
 // Case 10.1, lambda = 0.3 from rest: stuck until the force first reaches R
 // (closed form asin(0.3)), then slides for ever with direct reversals.
 TEST(SeedCases, Lambda03NoStopAfterTheStart) {
-  const Solution s = solve(seed_case(0.3, 0), 200.0);
+  const Solution s = solve(seed_model(0.3, 0), 200.0);
   testing::expect_well_formed(s, 200.0);
   ASSERT_GE(s.phases.size(), 3u);
   EXPECT_EQ(s.phases[0].kind, PhaseKind::stick);
@@ -38,7 +34,7 @@ TEST(SeedCases, Lambda03NoStopAfterTheStart) {
 // The transient: slip durations converge to pi, the deviation changing sign
 // and roughly halving every half period (THEORY.md).
 TEST(SeedCases, Lambda03SlipDurationsConvergeToPi) {
-  const Solution s = solve(seed_case(0.3, 0), 60.0);
+  const Solution s = solve(seed_model(0.3, 0), 60.0);
   double previous = 0;
   for (std::size_t i = 2; i + 1 < s.phases.size(); ++i) {
     const double deviation = s.phases[i].duration() - kPi;
@@ -55,7 +51,7 @@ TEST(SeedCases, Lambda03SlipDurationsConvergeToPi) {
 // stick ending at a closed-form breakaway time.
 TEST(SeedCases, Lambda07TwoStopsPerPeriod) {
   const double periods = 50;
-  const Solution s = solve(seed_case(0.7, 0), periods * 2 * kPi);
+  const Solution s = solve(seed_model(0.7, 0), periods * 2 * kPi);
   testing::expect_well_formed(s, periods * 2 * kPi);
   const double alpha = std::asin(0.7);
   int sticks_after_first_breakaway = 0;
@@ -82,7 +78,7 @@ TEST(SeedCases, Lambda07TwoStopsPerPeriod) {
 // cos(t) = 1.01 t, whose only root in (0, 1) we check by its residual and
 // by bisection in long double (a different method from the engine's).
 TEST(SeedCases, Lambda101StopsForGood) {
-  const Solution s = solve(seed_case(1.01, -1), 1000.0);
+  const Solution s = solve(seed_model(1.01, -1), 1000.0);
   testing::expect_well_formed(s, 1000.0);
   ASSERT_EQ(s.phases.size(), 2u);
   EXPECT_EQ(s.phases[0].kind, PhaseKind::slip_backward);
@@ -117,7 +113,7 @@ TEST(SeedCases, RegimesAtTheThresholdPlusMinus1e9) {
   const double periods = 200;
   const double t_end = periods * 2 * kPi;
 
-  const Solution above = solve(seed_case(lambda_star + 1e-9, 0), t_end);
+  const Solution above = solve(seed_model(lambda_star + 1e-9, 0), t_end);
   testing::expect_well_formed(above, t_end);
   EXPECT_EQ(steady_state(above.model).regime, Regime::dead_bands);
   EXPECT_NEAR(static_cast<double>(above.summary.count(PhaseKind::stick)), 2 * periods, 1);
@@ -127,7 +123,7 @@ TEST(SeedCases, RegimesAtTheThresholdPlusMinus1e9) {
     EXPECT_NEAR(p.duration(), 4.1104e-9, 0.05e-9) << "stick " << i << " at " << p.t_begin;
   }
 
-  const Solution below = solve(seed_case(lambda_star - 1e-9, 0), t_end);
+  const Solution below = solve(seed_model(lambda_star - 1e-9, 0), t_end);
   testing::expect_well_formed(below, t_end);
   EXPECT_EQ(steady_state(below.model).regime, Regime::continuous);
   for (const Phase& p : below.phases) {

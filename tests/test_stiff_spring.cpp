@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "expect_invalid.hpp"
+#include "solution_checks.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
 #include "frictionref/sampling.hpp"
@@ -24,18 +25,13 @@
 namespace frictionref {
 namespace {
 
+using testing::seed_model;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 using testing::expect_invalid;
 
-// Seed model: m = B = w = 1.
-Model seed_model(double lambda, double v0 = 0) {
-  Model model;
-  model.friction = lambda;
-  model.v0 = v0;
-  return model;
-}
 
 // The stability limit, written out here: 2 / sqrt(kf / m).
 double limit_of(const Model& model, double kf) { return 2 / std::sqrt(kf / model.mass); }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "bad_input.hpp"
 #include "csv_reader.hpp"
 #include "run_binary.hpp"
 #include "test_support.hpp"
@@ -12,26 +13,11 @@
 namespace frictionref::cli_test {
 namespace {
 
-struct BadInput {
-  std::vector<std::string> args;
-  std::string names;  // must appear in the message: the option, as typed
-  std::string rule;   // and this (part of the rule), if not empty
-};
-
-std::ostream& operator<<(std::ostream& out, const BadInput& bad) {
-  for (const std::string& arg : bad.args) out << "'" << arg << "' ";
-  return out;
-}
-
 std::vector<std::string> events(std::vector<std::string> args) {
-  args.insert(args.begin(), "events");
-  args.insert(args.end(), {"-o", "out.csv"});
-  return args;
+  return writing("events", std::move(args));
 }
 std::vector<std::string> curve(std::vector<std::string> args) {
-  args.insert(args.begin(), "curve");
-  args.insert(args.end(), {"-o", "out.csv"});
-  return args;
+  return writing("curve", std::move(args));
 }
 
 const std::vector<BadInput> bad_inputs = {
@@ -125,27 +111,7 @@ const std::vector<BadInput> bad_inputs = {
 
 class BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
-TEST_P(BadInputTest, OneLineExitTwoNoFile) {
-  const BadInput& bad = GetParam();
-  TempDir dir;
-  const RunResult result = run_frictionref(bad.args, dir.path());
-  EXPECT_EQ(result.exit_code, 2);
-  EXPECT_TRUE(result.out.empty()) << result.out;
-  ASSERT_EQ(lines(result.err).size(), 1u) << result.err;
-  EXPECT_EQ(result.err.rfind("frictionref: error: ", 0), 0u) << result.err;
-  EXPECT_NE(result.err.find(bad.names), std::string::npos) << result.err;
-  EXPECT_NE(result.err.find(bad.rule), std::string::npos) << result.err;
-  EXPECT_TRUE(dir.entries().empty()) << "left behind: " << dir.entries().front();
-}
-
-// "12_events_lambda_0_3_t_end_10_mass_1": index (unique) and the arguments.
-std::string bad_input_name(const ::testing::TestParamInfo<BadInput>& info) {
-  std::string text = std::to_string(info.index);
-  for (const std::string& arg : info.param.args) {
-    if (arg != "-o" && arg != "out.csv") text += " " + arg;
-  }
-  return test_name(text);
-}
+TEST_P(BadInputTest, OneLineExitTwoNoFile) { expect_rejected(GetParam()); }
 
 INSTANTIATE_TEST_SUITE_P(All, BadInputTest, ::testing::ValuesIn(bad_inputs), bad_input_name);
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bad_input.hpp"
 #include "csv_reader.hpp"
 #include "reference_motion.hpp"
 #include "run_binary.hpp"
@@ -202,24 +203,11 @@ TEST(Stiff, StepAboveTheStabilityLimitIsRefusedWithTheLimit) {
                                          "1e4", "--dt", "0.0199", "--output-dt", "0.0199"})));
 }
 
-struct BadStiff {
-  std::vector<std::string> args;
-  std::string names;  // the option as typed (with its value)
-  std::string rule;   // part of the rule, or ""
-};
-
-std::ostream& operator<<(std::ostream& out, const BadStiff& bad) {
-  for (const std::string& arg : bad.args) out << "'" << arg << "' ";
-  return out;
-}
-
 std::vector<std::string> stiff(std::vector<std::string> args) {
-  args.insert(args.begin(), "stiff");
-  args.insert(args.end(), {"-o", "out.csv"});
-  return args;
+  return writing("stiff", std::move(args));
 }
 
-const std::vector<BadStiff> bad_stiff = {
+const std::vector<BadInput> bad_stiff = {
     {stiff({"--lambda", "0.3", "--t-end", "10", "--kf", "0"}), "--kf = 0", "> 0"},
     {stiff({"--lambda", "0.3", "--t-end", "10", "--kf", "-1e7"}), "--kf = -1e7", "> 0"},
     {stiff({"--lambda", "0.3", "--t-end", "10", "--kf", "nan"}), "--kf = nan", "finite"},
@@ -261,30 +249,11 @@ const std::vector<BadStiff> bad_stiff = {
      "--output-dt = 1", "spacing of doubles"},
 };
 
-class BadStiffTest : public ::testing::TestWithParam<BadStiff> {};
+class BadStiffTest : public ::testing::TestWithParam<BadInput> {};
 
-TEST_P(BadStiffTest, OneLineExitTwoNoFile) {
-  const BadStiff& bad = GetParam();
-  TempDir dir;
-  const RunResult result = run_frictionref(bad.args, dir.path());
-  EXPECT_EQ(result.exit_code, 2);
-  EXPECT_TRUE(result.out.empty()) << result.out;
-  ASSERT_EQ(lines(result.err).size(), 1u) << result.err;
-  EXPECT_EQ(result.err.rfind("frictionref: error: ", 0), 0u) << result.err;
-  EXPECT_TRUE(contains(result.err, bad.names)) << result.err;
-  EXPECT_TRUE(contains(result.err, bad.rule)) << result.err;
-  EXPECT_TRUE(dir.entries().empty()) << "left behind: " << dir.entries().front();
-}
+TEST_P(BadStiffTest, OneLineExitTwoNoFile) { expect_rejected(GetParam()); }
 
-std::string bad_stiff_name(const ::testing::TestParamInfo<BadStiff>& info) {
-  std::string text = std::to_string(info.index);
-  for (const std::string& arg : info.param.args) {
-    if (arg != "-o" && arg != "out.csv" && arg != "stiff") text += " " + arg;
-  }
-  return test_name(text);
-}
-
-INSTANTIATE_TEST_SUITE_P(All, BadStiffTest, ::testing::ValuesIn(bad_stiff), bad_stiff_name);
+INSTANTIATE_TEST_SUITE_P(All, BadStiffTest, ::testing::ValuesIn(bad_stiff), bad_input_name);
 
 TEST(Stiff, HelpExplainsTheModel) {
   const RunResult result = run_frictionref({"stiff", "--help"});
