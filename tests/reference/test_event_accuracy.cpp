@@ -322,3 +322,88 @@ TEST(EventAccuracyHighPrecision, EngineAgreesTo40Digits) {
             << " events, max |dt| / max(1, |t|) = " << worst.str(3) << "\n";
   ::testing::Test::RecordProperty("max_relative_error_high_precision", worst.str(3));
 }
+
+// The standing cross-check of issue 5: the same engine code instantiated in
+// 50 digits (HighPrecision: TOMS 748 roots, no GSL, no long double) is the
+// reference, and the double engine must agree with it under the same
+// acceptance limits (4 ulps for regular stops and breakaways, the derived
+// bound for near-grazing ones). Unlike the independent reference above this
+// shares the engine's logic, so it guards the double path's arithmetic (GSL,
+// the long double polish, rounding to double), not the algorithm.
+namespace {
+
+ref::Result from_high_precision(const Model& model, double t_end) {
+  using frictionref::HighPrecision;
+  const frictionref::BasicModel<HighPrecision> hp_model =
+      frictionref::model_cast<HighPrecision>(model);
+  const auto hp = frictionref::solve(hp_model, HighPrecision(t_end));
+  ref::Result result;
+  result.model = ref::RealInput::from_double(to_reference_input(model));
+  result.t_end = Real(t_end);
+  const Real w = hp_model.omega;
+  const auto acceleration = [&](int s, const Real& t) -> Real {
+    if (s == 0) return Real(0);
+    return (hp_model.amplitude * sin(w * t) - s * hp_model.friction) / hp_model.mass;
+  };
+  for (std::size_t i = 0; i < hp.phases.size(); ++i) {
+    const auto& p = hp.phases[i];
+    ref::Phase q;
+    q.kind = p.kind == PhaseKind::stick           ? ref::Kind::stick
+             : p.kind == PhaseKind::slip_forward ? ref::Kind::slip_forward
+                                                  : ref::Kind::slip_backward;
+    const int s = ref::sign_of(q.kind);
+    if (i == 0) {
+      q.start = ref::Start::initial;
+    } else if (hp.phases[i - 1].kind == PhaseKind::stick) {
+      q.start = ref::Start::breakaway;
+    } else {
+      q.start = s == 0 ? ref::Start::stop : ref::Start::from_stop;
+    }
+    q.t_begin = p.t_begin;
+    q.t_end = p.t_end;
+    q.tau_begin = w * p.t_begin;
+    q.tau_end = w * p.t_end;
+    q.x_begin = p.x_begin;
+    q.x_end = p.x_end;
+    q.v_begin = p.v_begin;
+    q.v_end = p.v_end;
+    q.at_horizon = i + 1 == hp.phases.size();
+    q.accel_begin = acceleration(s, p.t_begin);
+    q.accel_end = acceleration(s, p.t_end);
+    q.jerk_end = s == 0 ? Real(0) : hp_model.amplitude * w * cos(w * p.t_end) / hp_model.mass;
+    result.phases.push_back(q);
+  }
+  return result;
+}
+
+}  // namespace
+
+TEST(EventAccuracyHighPrecision, DoubleEngineAgreesWithTheFiftyDigitEngine) {
+  Checker checker;
+  for (const double lambda : {0.0, 0.05, 0.3, 0.53, 0.537, 0.6, 0.7, 0.99, 1.0, 1.01, 2.0})
+    for (const double v0 : {-5.0, -0.25, 0.0, 1.0})
+      for (const double t0 : {0.0, -2.5, 100.125}) {
+        const Model model = unit_model(lambda, v0, t0);
+        checker.check(compare(model, t0 + 64, frictionref::solve(model, t0 + 64),
+                              from_high_precision(model, t0 + 64)));
+      }
+  // Near-grazing stops, as in EventAccuracyNearGrazing: velocity dips just
+  // below zero before a breakaway, and lambda = 1 next to the inflection.
+  const auto versus_high_precision = [&](const Model& model, double t_end) {
+    checker.check(compare(model, t_end, frictionref::solve(model, t_end),
+                          from_high_precision(model, t_end)));
+  };
+  for (const double lambda : {0.5, 0.9})
+    for (const char* depth : {"-1e-6", "-1e-8", "-1e-10", "-1e-12"}) {
+      const Real l(lambda);
+      const Real tau_star = boost::multiprecision::asin(l) + 2 * kPi;
+      const Real v0 = Real(depth) - (1 - boost::multiprecision::cos(tau_star)) + l * tau_star;
+      versus_high_precision(unit_model(lambda, static_cast<double>(v0), 0), 40);
+    }
+  for (const char* d : {"1e-4", "1e-6", "1e-9"})
+    versus_high_precision(unit_model(1, static_cast<double>(kPi / 2 - 1 + Real(d)), 0), 10);
+  checker.finish("double engine vs the 50-digit engine (HighPrecision): unit grid to t0 + 64, "
+                 "and near-grazing stops");
+  EXPECT_GT(checker.events(), 1000u);
+  EXPECT_GE(checker.grazing(), 8u);
+}
