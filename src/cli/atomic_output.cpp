@@ -70,7 +70,13 @@ void set_default_permissions(int fd) {
   fchmod(fd, 0666 & ~mask);
 }
 
+std::string pending_output;  // describe_pending_output()
+
 }  // namespace
+
+std::string describe_pending_output() {
+  return pending_output.empty() ? std::string("standard output") : pending_output;
+}
 
 AtomicOutput::AtomicOutput(std::optional<std::string> path, std::string option)
     : path_(std::move(path)), option_(std::move(option)) {
@@ -80,10 +86,41 @@ AtomicOutput::AtomicOutput(std::optional<std::string> path, std::string option)
     return;
   }
   if (path_->empty()) fail("must not be empty");
+  pending_output = option_ + " = " + *path_;
+  namespace fs = std::filesystem;
   std::error_code ignored;
-  if (std::filesystem::is_directory(*path_, ignored)) fail("is a directory");
+  if (fs::is_directory(*path_, ignored)) fail("is a directory");
+  // A symbolic link stays a link: the file it points to is what gets
+  // replaced. A link into something that is no file (/dev/stdout to a pipe)
+  // and any existing device or pipe (/dev/null, /dev/full, a FIFO) cannot be
+  // replaced by a rename, and must not be: those are written in place.
+  // Names of an open descriptor (/dev/stdout, /dev/fd/3, /proc/self/fd/1)
+  // mean that descriptor, whatever file it happens to be: also in place.
+  const auto descriptor_alias = [](const std::string& name) {
+    return name.rfind("/proc/self/fd/", 0) == 0 || name.rfind("/dev/fd/", 0) == 0 ||
+           name == "/dev/stdout" || name == "/dev/stderr";
+  };
+  std::string target = *path_;
+  const bool link = fs::is_symlink(fs::symlink_status(*path_, ignored));
+  bool in_place = descriptor_alias(*path_);
+  if (link) {
+    in_place |= descriptor_alias(fs::read_symlink(*path_, ignored).string());
+    std::error_code unresolved;
+    const fs::path resolved = fs::canonical(*path_, unresolved);
+    if (unresolved) in_place = true;  // a link to something that is no file
+    else target = resolved.string();
+  }
+  const auto status = fs::status(target, ignored);
+  if (in_place || (fs::exists(status) && !fs::is_regular_file(status))) {
+    direct_ = true;
+    file_ = std::fopen(path_->c_str(), "w");
+    if (!file_) fail(fmt::format("cannot open for writing: {}", std::strerror(errno)));
+    std::setvbuf(file_, nullptr, _IOFBF, buffer_bytes);
+    return;
+  }
+  target_ = target;
 
-  std::vector<char> name(path_->begin(), path_->end());
+  std::vector<char> name(target_.begin(), target_.end());
   const std::string suffix = ".tmp.XXXXXX";
   name.insert(name.end(), suffix.begin(), suffix.end());
   name.push_back('\0');
@@ -106,6 +143,11 @@ AtomicOutput::~AtomicOutput() { discard(); }
 
 void AtomicOutput::discard() {
   if (!path_) return;
+  if (direct_) {
+    if (file_) std::fclose(file_);
+    file_ = nullptr;
+    return;
+  }
   if (file_) std::fclose(file_);
   file_ = nullptr;
   if (!temp_path_.empty()) std::remove(temp_path_.c_str());
@@ -115,6 +157,15 @@ void AtomicOutput::discard() {
 }
 
 void AtomicOutput::commit() {
+  if (direct_) {
+    const bool written = std::fflush(file_) == 0 && !std::ferror(file_);
+    const int error = errno;
+    const bool closed = std::fclose(file_) == 0;
+    file_ = nullptr;
+    if (!written || !closed) fail(fmt::format("write failed: {}", std::strerror(error)));
+    pending_output.clear();
+    return;
+  }
   if (!path_) {
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
       throw bad_input(fmt::format("writing to standard output failed: {}", std::strerror(errno)));
@@ -131,7 +182,7 @@ void AtomicOutput::commit() {
     discard();
     fail(fmt::format("write failed: {}", std::strerror(written ? errno : write_error)));
   }
-  if (std::rename(temp_path_.c_str(), path_->c_str()) != 0) {
+  if (std::rename(temp_path_.c_str(), target_.c_str()) != 0) {
     const int error = errno;
     discard();
     fail(fmt::format("cannot rename the finished file into place: {}", std::strerror(error)));
@@ -139,6 +190,7 @@ void AtomicOutput::commit() {
   temp_path_.clear();
   unguard_temp_file(guard_slot_);
   guard_slot_ = -1;
+  pending_output.clear();
 }
 
 void AtomicOutput::fail(const std::string& what) const {

@@ -161,7 +161,7 @@ void write_figure(const Figure& figure, const std::string& path, const std::stri
   write_data(figure, data.path());
   {
     std::ofstream out(commands.path());
-    out << script(figure, data.path(), output.temp_path(), ends_with(path, ".svg"));
+    out << script(figure, data.path(), output.write_path(), ends_with(path, ".svg"));
     if (!out) throw bad_input("cannot write gnuplot's script file");
   }
 
@@ -190,7 +190,7 @@ void write_figure(const Figure& figure, const std::string& path, const std::stri
                                 first_line.empty() ? "no message" : first_line));
   }
   std::error_code error;
-  if (fs::file_size(output.temp_path(), error) == 0 || error)
+  if (fs::file_size(output.write_path(), error) == 0 || error)
     throw bad_input(fmt::format("{} = {}: gnuplot wrote nothing", option, path));
   output.commit();
 }

@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <system_error>
 #include <vector>
 
+#include "atomic_output.hpp"
 #include "cli_error.hpp"
 #include "command.hpp"
 #include "csv_format.hpp"
@@ -102,6 +104,11 @@ int main(int argc, char** argv) {
     return run(argc, argv);
   } catch (const CliError& error) {
     return report(error.code(), error.what());
+  } catch (const std::system_error& error) {
+    // A write that failed mid-stream (disk full, I/O error): the output's
+    // temporary file is already gone (unwound); say which output it was.
+    return report(exit_bad_input, describe_pending_output() + ": write failed: " +
+                                      error.code().message());
   } catch (const frictionref::InvalidInput& error) {
     // Commands translate these to option names; this is the safety net.
     return report(exit_bad_input, error.what());

@@ -137,6 +137,82 @@ TEST(OutputFileSignal, InterruptedRunLeavesNothing) {
   }
 }
 
+// The other long-running writers clean up the same way: stiff, and curve
+// with a figure pending (two outputs in flight).
+TEST(OutputFileSignal, InterruptedStiffAndCurveWithFigureLeaveNothing) {
+  const std::vector<std::vector<std::string>> runs = {
+      {"stiff", "--lambda", "0.7", "--t-end", "1e6", "-o", "s.csv"},
+      {"curve", "--lambda", "0.7", "--t-end", "1e7", "--dt", "0.01", "--force", "-o", "s.csv",
+       "--plot", "s.svg"},
+  };
+  for (const auto& args : runs) {
+    TempDir dir;
+    const int pid = spawn_frictionref(args, dir.path());
+    bool writing = false;
+    for (int i = 0; i < 1000 && !writing; ++i) {
+      for (const std::string& name : dir.entries()) writing |= name.rfind("s.csv.tmp.", 0) == 0;
+      if (!writing) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    EXPECT_TRUE(writing) << args[0];
+    kill(pid, SIGTERM);
+    EXPECT_EQ(wait_exit_code(pid), 128 + SIGTERM);
+    EXPECT_TRUE(dir.entries().empty()) << args[0] << " left behind: " << dir.entries().front();
+  }
+}
+
+// A full disk (/dev/full fails every write with ENOSPC) is one clear line and
+// exit 2; the device itself is written in place, never replaced by a rename.
+TEST(OutputFileHostile, FullDiskIsOneClearLine) {
+  const std::vector<std::vector<std::string>> runs = {
+      {"events", "--lambda", "0.7", "--t-end", "30", "-o", "/dev/full"},
+      {"curve", "--lambda", "0.7", "--t-end", "30", "--dt", "0.01", "-o", "/dev/full"},
+      {"stiff", "--lambda", "0.7", "--t-end", "30", "-o", "/dev/full"},
+      {"convergence", "--lambda", "0.7", "--kf-list", "1e6", "--dt-fractions", "0.1", "-o",
+       "/dev/full"},
+  };
+  for (const auto& args : runs) {
+    const RunResult result = run_frictionref(args);
+    EXPECT_EQ(result.exit_code, 2) << args[0];
+    ASSERT_EQ(lines(result.err).size(), 1u) << result.err;
+    EXPECT_NE(result.err.find("-o = /dev/full"), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find("No space left on device"), std::string::npos) << result.err;
+    EXPECT_TRUE(std::filesystem::is_character_file("/dev/full"));
+  }
+  EXPECT_FALSE(std::filesystem::exists("/dev/full.tmp.XXXXXX"));
+}
+
+// A place nobody may create files in, not even root: one line, exit 2.
+TEST(OutputFileHostile, UnwritablePathIsOneClearLine) {
+  const RunResult result =
+      run_frictionref({"events", "--lambda", "0.7", "--t-end", "30", "-o", "/proc/out.csv"});
+  EXPECT_EQ(result.exit_code, 2);
+  ASSERT_EQ(lines(result.err).size(), 1u) << result.err;
+  EXPECT_NE(result.err.find("-o = /proc/out.csv"), std::string::npos) << result.err;
+  EXPECT_FALSE(std::filesystem::exists("/proc/out.csv"));
+}
+
+// A symbolic link stays a link; the file it points to is replaced.
+TEST(OutputFileHostile, SymlinkKeepsPointingAtTheNewFile) {
+  TempDir dir;
+  std::filesystem::create_symlink("real.csv", dir.path() / "link.csv");
+  {
+    std::ofstream(dir.path() / "real.csv") << "old\n";
+  }
+  ASSERT_TRUE(succeeded(
+      run_frictionref({"events", "--lambda", "0.7", "--t-end", "3", "-o", "link.csv"}, dir.path())));
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.path() / "link.csv"));
+  EXPECT_NE(read_file(dir.path() / "real.csv").find("phase,t_begin"), std::string::npos);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"link.csv", "real.csv"}));
+}
+
+// Writing to a pipe or terminal device by name works (no rename over it).
+TEST(OutputFileHostile, DeviceTargetIsWrittenInPlace) {
+  const RunResult result =
+      run_frictionref({"events", "--lambda", "0.7", "--t-end", "3", "-o", "/dev/stdout"});
+  ASSERT_TRUE(succeeded(result));
+  EXPECT_NE(result.out.find("phase,t_begin,t_end"), std::string::npos) << result.out;
+}
+
 TEST(OutputFileSummary, SummaryGoesToTheFileToo) {
   TempDir dir;
   const RunResult result = run_frictionref(
