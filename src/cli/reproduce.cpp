@@ -225,21 +225,29 @@ void run_reproduce(const ReproduceOptions& options, const Invocation& invocation
   std::vector<std::unique_ptr<PreparedCase>> cases;
   for (const SeedCase& seed : seed_cases) cases.push_back(std::make_unique<PreparedCase>(seed));
 
+  // Every folder exists before anything is printed or written.
+  std::vector<fs::path> dirs;
+  for (const auto& prepared : cases) {
+    const SeedCase& seed = prepared->seed;
+    dirs.push_back(fs::path(options.out) /
+                   fmt::format("case-{}-lambda-{}", seed.id, seed.lambda));
+    std::error_code error;
+    fs::create_directories(dirs.back(), error);
+    if (error) {
+      throw bad_input(fmt::format("--out = {}: cannot create {}: {}", options.out,
+                                  dirs.back().string(), error.message()));
+    }
+  }
+
   AtomicOutput summary(std::nullopt, "");
   fmt::print(summary.stream(),
              "# frictionref {} reproduce: seed problem 7, m=1 B=1 w=1 t0=0 t_end={} dt={}; "
              "stiff spring K_f={:g} (central differences) checked by compare\n",
              version, seed_t_end, seed_dt, seed_kf);
-  for (const auto& prepared : cases) {
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const auto& prepared = cases[k];
     const SeedCase& seed = prepared->seed;
-    const fs::path dir =
-        fs::path(options.out) / fmt::format("case-{}-lambda-{}", seed.id, seed.lambda);
-    std::error_code error;
-    fs::create_directories(dir, error);
-    if (error) {
-      throw bad_input(fmt::format("--out = {}: cannot create {}: {}", options.out, dir.string(),
-                                  error.message()));
-    }
+    const fs::path& dir = dirs[k];
     const CaseResult result = write_case(*prepared, dir, invocation.command_line,
                                          !options.no_figures);
     const Summary& events = result.events;
