@@ -87,9 +87,18 @@ RootBracket<long double> brent_then_newton(const F& f, const DF& slope, long dou
 
   // Stage 2: safeguarded Newton in long double.
   const long double eps = std::numeric_limits<long double>::epsilon();
+  // Where f is flat at long double resolution (a near-grazing stop), Newton
+  // creeps an ulp per step without crossing the root: after two steps that
+  // did not halve |f| (or two sub-resolution probes), bisect to the end (64
+  // steps at most). Converging Newton steps shrink |f| far faster than that.
+  int sub_resolution_steps = 0;
+  int stalled_steps = 0;
+  long double previous_fx = HUGE_VALL;
   for (int iteration = 0; iteration < 200; ++iteration) {
     ++calls;
     const long double fx = f(x);
+    stalled_steps = std::fabs(fx) > std::fabs(previous_fx) / 2 ? stalled_steps + 1 : 0;
+    previous_fx = fx;
     if (fx > 0) {
       result.lo = x;
     } else {
@@ -99,10 +108,14 @@ RootBracket<long double> brent_then_newton(const F& f, const DF& slope, long dou
     const long double width = result.hi - result.lo;
     if (width <= 2 * eps * std::fmax(1.0L, std::fabs(x))) break;
     const long double d = slope(x);
-    long double next = d < 0 ? x - fx / d : result.lo + width / 2;
+    const bool newton = d < 0 && sub_resolution_steps < 2 && stalled_steps < 2;
+    long double next = newton ? x - fx / d : result.lo + width / 2;
     // A Newton step below the resolution: test the neighbour across the root
-    // instead, which closes the bracket next iteration.
-    if (next == x) next = fx > 0 ? std::nextafter(x, result.hi) : std::nextafter(x, result.lo);
+    // instead, which closes the bracket next iteration if f is not flat.
+    if (next == x) {
+      ++sub_resolution_steps;
+      next = fx > 0 ? std::nextafter(x, result.hi) : std::nextafter(x, result.lo);
+    }
     if (!(next > result.lo && next < result.hi)) next = result.lo + width / 2;
     x = next;
   }

@@ -10,6 +10,8 @@
 #include <limits>
 #include <sstream>
 
+#include <boost/math/constants/constants.hpp>
+
 #include "bracketed_root.hpp"
 #include "force_crossings.hpp"
 #include "frictionref/closed_form.hpp"
@@ -90,6 +92,12 @@ BasicExactEngine<Real>::BasicExactEngine(const BasicModel<Real>& model, const Re
   const detail::ForceCrossings<Work> crossings(b_, r_);
   crosses_ = crossings.crosses();
   alpha_ = crossings.alpha();
+  if (crosses_) {
+    // time_resolution = 8 eps |tau|: the window pi - 2 alpha is 4 of them at
+    // |tau| = window / (32 eps). Only for lambda within ~1e-14 of 1.
+    const Work window = boost::math::constants::pi<Work>() - 2 * alpha_;
+    resolvable_phase_ = window / (32 * Work(std::numeric_limits<Real>::epsilon()));
+  }
 
   tau_ = omega_ * Work(model.t0);
   tau_end_ = omega_ * Work(t_end);
@@ -121,6 +129,10 @@ int BasicExactEngine<Real>::direction_at_rest(const Work& tau, bool& merged) con
   // At a breakaway the stick would have zero length (a start exactly at a
   // breakaway time, a grazing stop): the slip starts now. Where the force
   // re-enters the band the mass stays.
+  using std::fabs;
+  // Where the force window is below the time resolution, no slip from rest is
+  // representable: the mass stays (docs/theory.md 4.11).
+  if (crosses_ && fabs(tau) >= resolvable_phase_) return 0;
   if (crosses_) {
     const int near = detail::ForceCrossings<Work>(crosses_, alpha_)
                          .crossing_near(tau, detail::time_resolution<Real>(tau));
@@ -266,8 +278,12 @@ bool BasicExactEngine<Real>::next(BasicPhase<Real>& phase) {
       Work breakaway = tau_end_;
       bool breaks = false;
       if (crosses_) {
-        breakaway = detail::ForceCrossings<Work>(crosses_, alpha_).next_breakaway(tau_, direction);
-        breaks = breakaway < tau_end_;
+        // The first breakaway whose force window is resolvable (|w t| below
+        // resolvable_phase_; only matters for lambda within ~1e-14 of 1).
+        const Work from = tau_ > -resolvable_phase_ ? tau_ : -resolvable_phase_;
+        breakaway = detail::ForceCrossings<Work>(crosses_, alpha_).next_breakaway(from, direction);
+        breaks = breakaway < tau_end_ && breakaway < resolvable_phase_;
+        if (!breaks) breakaway = tau_end_;
       }
       const Work end = breaks ? breakaway : tau_end_;
       const bool emitted = emit(phase, PhaseKind::stick, end, x_, Work(0), !breaks);

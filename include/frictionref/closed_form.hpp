@@ -60,14 +60,12 @@ class PhaseLaw {
 
   Work velocity(const Work& tau) const {
     if (s_ == 0) return Work(0);
-    using std::cos;
-    return v_a_ + b_ * (cos_a_ - cos(tau)) - Work(s_) * r_ * (tau - tau_a_);
+    return v_a_ + b_ * cos_difference(tau - tau_a_) - Work(s_) * r_ * (tau - tau_a_);
   }
 
   // s * v: positive while the slip lasts; the function whose root ends it.
   Work speed_along_slip(const Work& tau) const {
-    using std::cos;
-    return Work(s_) * (v_a_ + b_ * (cos_a_ - cos(tau))) - r_ * (tau - tau_a_);
+    return Work(s_) * (v_a_ + b_ * cos_difference(tau - tau_a_)) - r_ * (tau - tau_a_);
   }
 
   // d(s * v) / d tau = s b sin tau - r.
@@ -76,13 +74,43 @@ class PhaseLaw {
     return Work(s_) * b_ * sin(tau) - r_;
   }
 
+  // Written as x_a + (v_a h + b [cos a (h - sin h) + 2 sin a sin^2(h/2)]
+  // - s r h^2 / 2) / w, h = tau - a: the same closed form without the
+  // cancellation of b h cos a against b (sin tau - sin a), so a short slide
+  // keeps its relative accuracy.
   Work position(const Work& tau) const {
     if (s_ == 0) return x_a_;
     using std::sin;
     const Work h = tau - tau_a_;
-    return x_a_ + ((v_a_ + b_ * cos_a_) * h - b_ * (sin(tau) - sin_a_) -
-                   Work(s_) * r_ * h * h / 2) /
-                      omega_;
+    const Work half = sin(h / 2);
+    const Work forced = cos_a_ * h_minus_sin_h(h) + 2 * sin_a_ * half * half;
+    return x_a_ + (v_a_ * h + b_ * forced - Work(s_) * r_ * h * h / 2) / omega_;
+  }
+
+  // cos a - cos(a + h) = 2 cos a sin^2(h/2) + sin a sin h: no cancellation
+  // where cos a and cos(a + h) are both near +-1, so a stop there stays
+  // resolvable to the last bits (a plain cos a - cos tau loses them).
+  Work cos_difference(const Work& h) const {
+    using std::sin;
+    const Work half = sin(h / 2);
+    return 2 * cos_a_ * half * half + sin_a_ * sin(h);
+  }
+
+  // h - sin h, by its Taylor series where the difference would cancel.
+  static Work h_minus_sin_h(const Work& h) {
+    using std::fabs;
+    using std::sin;
+    if (fabs(h) > Work(1) / 2) return h - sin(h);
+    const Work h2 = h * h;
+    Work term = h * h2 / 6;  // h^3 / 3!
+    Work sum = term;
+    for (int k = 2; k < 40; ++k) {  // + h^5/5! - h^7/7! ...: |term| falls by h^2/20 or more
+      term *= -h2 / Work((2 * k) * (2 * k + 1));
+      const Work next = sum + term;
+      if (next == sum) break;
+      sum = next;
+    }
+    return sum;
   }
 
   Work acceleration(const Work& tau) const {

@@ -94,6 +94,9 @@ class BasicExactEngine {
   Work omega_, b_, r_;  // b = B/(m w), r = R/(m w)
   bool crosses_ = false;  // lambda < 1: the force crosses +-R and breakaways exist
   Work alpha_ = 0;        // asin(lambda) when crosses_
+  // |F| > R only on windows pi - 2 alpha wide; beyond |w t| = this the window
+  // is under 4 time resolutions and no slip it starts is representable.
+  Work resolvable_phase_ = 0;
   Work tau_end_;
   Real t_current_;      // user time of tau_ as emitted (t0 exactly at the start)
   Work tau_, x_, v_;    // current phase start
