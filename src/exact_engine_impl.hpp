@@ -101,6 +101,26 @@ BasicExactEngine<Real>::BasicExactEngine(const BasicModel<Real>& model, const Re
 
   tau_ = omega_ * Work(model.t0);
   tau_end_ = omega_ * Work(t_end);
+  {
+    // The motion must stay within the range of Real: closed-form bounds on
+    // |a|, |v| (|v0| + 2 b + r |w (t_end - t0)|) and |x| (|x0| + that |v|
+    // times the horizon).
+    using std::fabs;
+    const Work limit(1e300);
+    const Work acceleration = omega_ * (b_ + r_);
+    const Work speed = fabs(Work(model.v0)) + 2 * b_ + r_ * fabs(tau_end_ - tau_);
+    const Work travel = fabs(Work(model.x0)) + speed * fabs(Work(t_end) - Work(model.t0));
+    using std::isfinite;
+    if (!(isfinite(acceleration) && acceleration < limit && isfinite(speed) && speed < limit))
+      throw InvalidInput("amplitude", detail::to_text(model.amplitude),
+                         "with this mass, omega and friction the velocity or acceleration "
+                         "(B/(m w) = " + detail::to_text(Real(b_)) +
+                             ") would leave the range of double");
+    if (!(isfinite(travel) && travel < limit))
+      throw InvalidInput("t_end", detail::to_text(t_end),
+                         "the position could leave the range of double before t_end (|x| up "
+                         "to " + detail::to_text(Real(travel)) + ")");
+  }
   using std::fabs;
   const Work max_phase(detail::kMaxForcingPhase);
   const std::string phase_rule = "must satisfy |w t| <= 1e10 rad (a double cannot resolve the "

@@ -73,6 +73,28 @@ TEST(ExactEngine, RejectsBadHorizonAndModel) {
   EXPECT_THROW(ExactEngine(m, 1.0, options), InvalidInput);
 }
 
+// A valid model whose motion would leave the range of double is refused up
+// front (found by fuzzing: B/(m w) = 1e600 gave inf velocities).
+TEST(ExactEngine, RejectsMotionOutsideTheRangeOfDouble) {
+  Model huge_scale = seed_model(0.3);
+  huge_scale.mass = 1e-300;
+  huge_scale.amplitude = 1e300;
+  try {
+    ExactEngine engine(huge_scale, 1.0);
+    ADD_FAILURE() << "accepted B/(m w) = 1e600";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "amplitude");
+  }
+  Model fast = seed_model(0.3, 1e299);
+  try {
+    ExactEngine engine(fast, 1000.0);
+    ADD_FAILURE() << "accepted |x| up to 1e302";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "t_end");
+  }
+  EXPECT_NO_THROW(ExactEngine(seed_model(0.3, 1e290), 1000.0));
+}
+
 TEST(ExactEngine, SummaryCountsAddUp) {
   const Solution s = solve(seed_model(0.7), 200.0);
   const Summary& sum = s.summary;
