@@ -127,9 +127,13 @@ BasicExactEngine<Real>::BasicExactEngine(const BasicModel<Real>& model, const Re
                                  "forcing phase beyond that)";
   if (fabs(tau_) > max_phase) throw InvalidInput("t0", detail::to_text(model.t0), phase_rule);
   if (fabs(tau_end_) > max_phase) throw InvalidInput("t_end", detail::to_text(t_end), phase_rule);
-  if (!(tau_end_ > tau_))
-    throw InvalidInput("t_end", detail::to_text(t_end),
-                       "must exceed t0 by more than the resolution of w t");
+  // Nothing shorter than the time resolution is resolved (phases that short
+  // are merged), so a shorter horizon has no answer the engine can give.
+  if (!(tau_end_ - tau_ > detail::time_resolution<Real>(tau_)))
+    throw InvalidInput(
+        "t_end", detail::to_text(t_end),
+        "must exceed t0 by more than the engine's time resolution 8 eps max(1, |w t0|) / w = " +
+            detail::to_text(Real(detail::time_resolution<Real>(tau_) / omega_)));
   t_current_ = model.t0;
   x_ = Work(model.x0);
   v_ = Work(model.v0);

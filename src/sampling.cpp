@@ -105,15 +105,12 @@ std::vector<State> sample_at(const Model& model, const std::vector<double>& time
       throw InvalidInput("times[" + std::to_string(i) + "]", text(times[i]),
                          "must be >= the previous time " + text(times[i - 1]));
   }
-  const double last = times.back();
-  if (last == model.t0) {
-    // Only the initial instant: a horizon just past it gives its phase.
-    ExactEngine engine(model, std::nextafter(model.t0, std::numeric_limits<double>::infinity()));
-    Phase phase;
-    engine.next(phase);
-    for (double t : times) states.push_back(evaluate(model, phase, t));
-    return states;
-  }
+  // The engine resolves nothing shorter than its time resolution, so the
+  // horizon reaches at least a few resolutions past t0 (times at or just
+  // after t0 then fall in the first phase).
+  const double span = 32 * std::numeric_limits<double>::epsilon() *
+                      std::fmax(1.0, std::fabs(model.omega * model.t0)) / model.omega;
+  const double last = std::fmax(times.back(), model.t0 + span);
   ExactEngine engine(model, last);
   Phase phase;
   engine.next(phase);
