@@ -81,19 +81,29 @@ ErrorStats error_stats(const std::vector<double>& t, const std::vector<double>& 
                        const std::vector<double>& exact) {
   ErrorStats stats;
   stats.max_time = t.front();
-  double integral = 0;
-  double previous = 0;
   for (std::size_t i = 0; i < t.size(); ++i) {
-    const double e = candidate[i] - exact[i];
-    if (std::fabs(e) > stats.max) {
-      stats.max = std::fabs(e);
+    const double e = std::fabs(candidate[i] - exact[i]);
+    if (e > stats.max) {
+      stats.max = e;
       stats.max_time = t[i];
       stats.max_row = i;
     }
+  }
+  // The squares are taken of errors scaled by the largest one, so huge values
+  // in a candidate file cannot overflow into inf * 0 = NaN; an infinite error
+  // gives an infinite RMS (a FAIL, never a NaN).
+  if (!(stats.max > 0) || !std::isfinite(stats.max)) {
+    stats.rms = stats.max;
+    return stats;
+  }
+  double integral = 0;
+  double previous = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double e = (candidate[i] - exact[i]) / stats.max;
     if (i > 0) integral += (t[i] - t[i - 1]) * (previous * previous + e * e) / 2;
     previous = e;
   }
-  stats.rms = std::sqrt(integral / (t.back() - t.front()));
+  stats.rms = stats.max * std::sqrt(integral / (t.back() - t.front()));
   return stats;
 }
 
@@ -253,14 +263,15 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
     r.displacement_rms_error = displacement.rms;
   }
 
-  // The engine's stick phases up to the last candidate time.
-  ExactEngine engine(model, r.t_last);
+  // The engine's stick phases up to the last candidate time (a record
+  // shorter than the engine's time resolution still gets a horizon it takes).
+  ExactEngine engine(model, resolvable_t_end(model, r.t_last));
   Phase phase;
   while (engine.next(phase)) {
-    if (phase.kind != PhaseKind::stick) continue;
+    if (phase.kind != PhaseKind::stick || !(phase.t_begin < r.t_last)) continue;
     StickInterval stick;
     stick.start = phase.t_begin;
-    stick.end = phase.t_end;
+    stick.end = std::fmin(phase.t_end, r.t_last);
     r.exact_phases.push_back(stick);
   }
   if (engine.summary().termination != Termination::reached_end)

@@ -240,8 +240,9 @@ bool BasicExactEngine<Real>::find_slip_end(Work& tau_stop, int& direction) {
       // minimum of s v (a breakaway time in direction s). Not a stop.
       bool merged = false;
       const int next = direction_at_rest(stop, merged);
-      if (next == s && !horizon) {
+      if (next == s) {
         ++summary_.touches;
+        if (horizon) return false;  // the slip goes on to the horizon
         piece_begin = critical;
         search_from = critical + resolution;
         continue;

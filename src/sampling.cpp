@@ -91,6 +91,12 @@ bool UniformSampler::next(State& state) {
   return true;
 }
 
+double resolvable_t_end(const Model& model, double t) {
+  const double span = 32 * std::numeric_limits<double>::epsilon() *
+                      std::fmax(1.0, std::fabs(model.omega * model.t0)) / model.omega;
+  return std::fmax(t, model.t0 + span);
+}
+
 std::vector<State> sample_at(const Model& model, const std::vector<double>& times) {
   std::vector<State> states;
   if (times.empty()) return states;
@@ -105,12 +111,8 @@ std::vector<State> sample_at(const Model& model, const std::vector<double>& time
       throw InvalidInput("times[" + std::to_string(i) + "]", text(times[i]),
                          "must be >= the previous time " + text(times[i - 1]));
   }
-  // The engine resolves nothing shorter than its time resolution, so the
-  // horizon reaches at least a few resolutions past t0 (times at or just
-  // after t0 then fall in the first phase).
-  const double span = 32 * std::numeric_limits<double>::epsilon() *
-                      std::fmax(1.0, std::fabs(model.omega * model.t0)) / model.omega;
-  const double last = std::fmax(times.back(), model.t0 + span);
+  // Times at or just after t0 fall in the first phase of a resolvable horizon.
+  const double last = resolvable_t_end(model, times.back());
   ExactEngine engine(model, last);
   Phase phase;
   engine.next(phase);

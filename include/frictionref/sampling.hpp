@@ -51,6 +51,10 @@ class UniformSampler {
   bool finished_ = false;
 };
 
+// max(t, t0 + 4 time resolutions): a horizon the engine accepts however
+// close t is to t0 (it resolves nothing shorter than 8 eps max(1, |w t0|) / w).
+double resolvable_t_end(const Model& model, double t);
+
 // The exact state at each of `times` (non-decreasing, within [t0, t_end]).
 // Throws InvalidInput otherwise.
 std::vector<State> sample_at(const Model& model, const std::vector<double>& times);
