@@ -547,3 +547,35 @@ TEST(CompareReport, ToleranceOptionsAreHonoured) {
 
 }  // namespace
 }  // namespace frictionref
+
+namespace frictionref {
+namespace {
+
+// Found by fuzzing: a candidate with huge values (and a repeated time) made
+// the RMS error NaN; it must be a finite or infinite number and FAIL.
+TEST(CompareReport, HugeCandidateValuesGiveNoNaN) {
+  TimeHistory history;
+  history.t = {0, 1, 1, 2};
+  history.v = {1e300, -1e300, 1.7e308, -1.7e308};
+  history.source = "huge";
+  const ComparisonReport report = compare(seed_model(0.7), history);
+  EXPECT_FALSE(std::isnan(report.velocity_rms_error));
+  EXPECT_FALSE(std::isnan(report.velocity_max_error));
+  EXPECT_EQ(report.verdict, Verdict::fail);
+  for (const Check& check : report.checks) EXPECT_FALSE(std::isnan(check.value)) << check.name();
+}
+
+// Found by fuzzing: a record shorter than the engine's time resolution is
+// still compared (the engine gets a horizon it resolves).
+TEST(CompareReport, RecordShorterThanTheTimeResolution) {
+  TimeHistory history;
+  history.t = {0, 1e-17};
+  history.v = {0, 0};
+  history.source = "short";
+  const ComparisonReport report = compare(seed_model(0.7), history);
+  EXPECT_EQ(report.rows, 2u);
+  EXPECT_EQ(report.velocity_max_error, 0);
+}
+
+}  // namespace
+}  // namespace frictionref

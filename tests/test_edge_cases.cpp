@@ -187,3 +187,26 @@ TEST(EdgeCases, NoZeroLengthPhases) {
 
 }  // namespace
 }  // namespace frictionref
+
+namespace frictionref {
+namespace {
+
+// Found by fuzzing: R = 0 and a touch of v = 0 a few ulps before the horizon,
+// in the piece that ends there. The slip goes on to t_end (it used to be cut
+// into two adjacent slip+ phases).
+TEST(EdgeCases, TouchInThePieceEndingAtTheHorizon) {
+  Model m;
+  m.mass = 10000;
+  m.amplitude = 252;
+  m.omega = 6.5536000000000004e-05;
+  m.friction = 0;
+  m.x0 = 1114111;
+  m.t0 = 6.4000000000000002e-09;
+  const double t_end = 12367720.102327986;
+  const Solution s = solve(m, t_end);
+  testing::expect_well_formed(s, t_end);  // no two adjacent phases of one kind
+  EXPECT_EQ(s.summary.count(PhaseKind::stick), 0u);
+}
+
+}  // namespace
+}  // namespace frictionref
