@@ -55,6 +55,7 @@
 #include <optional>
 #include <string>
 
+#include "fuzz_check.hpp"
 #include "frictionref/frictionref.hpp"
 
 namespace {
@@ -202,16 +203,6 @@ void print_phase(const char* name, const Phase& p) {
   std::abort();
 }
 
-// FUZZ_CHECK(condition): abort with the condition and the context on stderr.
-// FUZZ_CHECK_AT(condition, extra...): also passes `extra` to fail().
-#define FUZZ_CHECK(condition)                     \
-  do {                                            \
-    if (!(condition)) fail(#condition, __LINE__); \
-  } while (0)
-#define FUZZ_CHECK_AT(condition, ...)                          \
-  do {                                                         \
-    if (!(condition)) fail(#condition, __LINE__, __VA_ARGS__); \
-  } while (0)
 
 long double force(const Model& m, double t) {
   return static_cast<long double>(m.amplitude) *

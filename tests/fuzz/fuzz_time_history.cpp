@@ -37,6 +37,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "fuzz_check.hpp"
 #include "frictionref/frictionref.hpp"
 
 namespace {
@@ -78,16 +79,6 @@ bool allow_numerical_failure() {
   std::abort();
 }
 
-// FUZZ_CHECK(condition): abort with the condition and the context on stderr.
-// FUZZ_CHECK_AT(condition, extra...): also passes `extra` to fail().
-#define FUZZ_CHECK(condition)                     \
-  do {                                            \
-    if (!(condition)) fail(#condition, __LINE__); \
-  } while (0)
-#define FUZZ_CHECK_AT(condition, ...)                          \
-  do {                                                         \
-    if (!(condition)) fail(#condition, __LINE__, __VA_ARGS__); \
-  } while (0)
 
 frictionref::Model compare_model(int which) {
   frictionref::Model model;  // m = B = w = 1, the seed's cases
