@@ -61,12 +61,13 @@ SteadyState steady_state(const Model& model) {
   const Long lambda = Long(model.friction) / Long(model.amplitude);
   s.lambda = static_cast<double>(lambda);
   s.threshold = regime_threshold();
-  s.regime = lambda < threshold_long() ? Regime::continuous
-             : lambda < 1              ? Regime::dead_bands
-                                       : Regime::stops;
-  s.regime_by_quoted_threshold = lambda < Long(regime_threshold_quoted) ? Regime::continuous
-                                 : lambda < 1                           ? Regime::dead_bands
-                                                                        : Regime::stops;
+  // Classified by the lambda the report shows (R/B rounded to double), so
+  // regime_for(report.lambda) always agrees with it, even within an ulp of
+  // lambda* (found by fuzzing).
+  s.regime = regime_for(s.lambda);
+  s.regime_by_quoted_threshold = s.lambda < regime_threshold_quoted ? Regime::continuous
+                                 : s.lambda < 1                     ? Regime::dead_bands
+                                                                    : Regime::stops;
   s.reversal_phase = s.breakaway_phase = s.stop_phase = kNaN;
 
   const Long pi = boost::math::constants::pi<Long>();

@@ -390,3 +390,22 @@ TEST(SteadyStateCrossCheck, ContinuousReversalsConvergeInTheEngine) {
 
 }  // namespace
 }  // namespace frictionref
+
+namespace frictionref {
+namespace {
+
+// Found by fuzzing: R / B within an ulp of lambda*, where the long double
+// quotient and the reported (double) lambda fall on different sides. The
+// regime is that of the lambda the report shows.
+TEST(SteadyState, RegimeIsThatOfTheReportedLambda) {
+  Model m;
+  m.mass = 1792;
+  m.amplitude = 65540;
+  m.friction = 35196.89849646949;
+  const SteadyState s = steady_state(m);
+  EXPECT_EQ(s.regime, regime_for(s.lambda));
+  EXPECT_EQ(s.lambda, m.friction / m.amplitude);
+}
+
+}  // namespace
+}  // namespace frictionref
