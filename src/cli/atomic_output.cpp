@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -124,10 +125,21 @@ AtomicOutput::AtomicOutput(std::optional<std::string> path, std::string option)
   const std::string suffix = ".tmp.XXXXXX";
   name.insert(name.end(), suffix.begin(), suffix.end());
   name.push_back('\0');
+  // Creating the file and registering it for removal on a signal is one step
+  // for the signals we clean up after: one arriving in between would
+  // otherwise leave the new file behind.
+  sigset_t cleanup_signals, previous;
+  sigemptyset(&cleanup_signals);
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&cleanup_signals, signal_number);
+  sigprocmask(SIG_BLOCK, &cleanup_signals, &previous);
   const int fd = mkstemp(name.data());
-  if (fd < 0) fail(fmt::format("cannot create a file there: {}", std::strerror(errno)));
-  temp_path_ = name.data();
-  guard_slot_ = guard_temp_file(temp_path_);
+  const int create_error = errno;
+  if (fd >= 0) {
+    temp_path_ = name.data();
+    guard_slot_ = guard_temp_file(temp_path_);
+  }
+  sigprocmask(SIG_SETMASK, &previous, nullptr);
+  if (fd < 0) fail(fmt::format("cannot create a file there: {}", std::strerror(create_error)));
   set_default_permissions(fd);
   file_ = fdopen(fd, "w");
   if (!file_) {
