@@ -307,7 +307,9 @@ bool BasicExactEngine<Real>::next(BasicPhase<Real>& phase) {
         // resolvable_phase_; only matters for lambda within ~1e-14 of 1).
         const Work from = tau_ > -resolvable_phase_ ? tau_ : -resolvable_phase_;
         breakaway = detail::ForceCrossings<Work>(crosses_, alpha_).next_breakaway(from, direction);
-        breaks = breakaway < tau_end_ && breakaway < resolvable_phase_;
+        // A breakaway that rounds to t_end in Real is at the horizon.
+        breaks = breakaway < tau_end_ && breakaway < resolvable_phase_ &&
+                 Real(breakaway / omega_) < t_end_;
         if (!breaks) breakaway = tau_end_;
       }
       const Work end = breaks ? breakaway : tau_end_;
@@ -342,7 +344,9 @@ bool BasicExactEngine<Real>::next(BasicPhase<Real>& phase) {
     const Work end = stops ? tau_stop : tau_end_;
     const Work x_end = law.position(end);
     const Work v_end = stops ? Work(0) : law.velocity(end);
-    const bool at_horizon = !stops || tau_stop >= tau_end_;
+    // A stop that rounds to t_end in Real ends the run there (found by
+    // fuzzing: with max_phases it was reported as a phase limit).
+    const bool at_horizon = !stops || tau_stop >= tau_end_ || !(Real(tau_stop / omega_) < t_end_);
     const bool emitted = emit(phase, kind, end, x_end, v_end, at_horizon);
     if (at_horizon) {
       done_ = true;
