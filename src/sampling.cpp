@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "frictionref/error.hpp"
@@ -118,7 +119,10 @@ std::vector<State> sample_at(const Model& model, const std::vector<double>& time
   engine.next(phase);
   states.reserve(times.size());
   for (double t : times) {
-    while (t >= phase.t_end && phase.t_end < last) engine.next(phase);
+    // An engine that stops early (a status, never expected) must not loop here.
+    while (t >= phase.t_end && phase.t_end < last)
+      if (!engine.next(phase))
+        throw std::runtime_error("exact engine: " + engine.summary().message);
     states.push_back(evaluate(model, phase, t));
   }
   return states;
