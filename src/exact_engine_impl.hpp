@@ -69,7 +69,7 @@ std::string BasicSummary<Real>::brief_report() const {
        << " slip-=" << count(PhaseKind::slip_backward) << " stops=" << stops
        << " reversals=" << reversals << " breakaways=" << breakaways
        << " merged_sticks=" << merged_sticks << " touches=" << touches << " sign_tests=" << sign_tests
-       << " root_function_calls=" << root_function_calls << " t=" << final_state.t
+       << " root_function_calls=" << root_function_calls << " predicted_stops=" << predicted_stops << " t=" << final_state.t
        << " x=" << final_state.x << " v=" << final_state.v;
   return text.str();
 }
@@ -137,16 +137,24 @@ BasicExactEngine<Real>::BasicExactEngine(const BasicModel<Real>& model, const Re
   t_current_ = model.t0;
   x_ = Work(model.x0);
   v_ = Work(model.v0);
+  start_trig_ = sin_cos(tau_);
+  if (crosses_) {
+    using std::sqrt;
+    const Work lambda = r_ / b_;
+    cos_alpha_ = sqrt((1 - lambda) * (1 + lambda));
+  }
   bool merged = false;
-  sign_ = model.v0 > 0 ? 1 : model.v0 < 0 ? -1 : direction_at_rest(tau_, merged);
+  sign_ = model.v0 > 0   ? 1
+          : model.v0 < 0 ? -1
+                         : direction_at_rest(tau_, start_trig_.sin, merged);
   summary_.merged_sticks += merged;
   mode_ = sign_ != 0 ? Mode::slip : Mode::stick;
   summary_.final_state = {model.t0, model.x0, model.v0, 0, PhaseKind::stick};
 }
 
 template <class Real>
-int BasicExactEngine<Real>::direction_at_rest(const Work& tau, bool& merged) const {
-  using std::sin;
+int BasicExactEngine<Real>::direction_at_rest(const Work& tau, const Work& sin_tau,
+                                              bool& merged) const {
   merged = false;
   // Within the time resolution of a force crossing, the sign of b sin(tau) - r
   // is rounding noise: decide from the closed-form crossing times instead.
@@ -157,28 +165,164 @@ int BasicExactEngine<Real>::direction_at_rest(const Work& tau, bool& merged) con
   // Where the force window is below the time resolution, no slip from rest is
   // representable: the mass stays (docs/theory.md 4.11).
   if (crosses_ && fabs(tau) >= resolvable_phase_) return 0;
+  const Work force = b_ * sin_tau;  // velocity units, like r_
   if (crosses_) {
-    const int near = detail::ForceCrossings<Work>(crosses_, alpha_)
-                         .crossing_near(tau, detail::time_resolution<Real>(tau));
-    if (near != 2) {
-      merged = near != 0;
-      return near;
+    // sin is 1-Lipschitz: within `tolerance` of a crossing, b sin tau lies
+    // within b tolerance of +-r. Farther (with room for the rounding of
+    // sin tau), no crossing is near and the sign test below decides.
+    const Work tolerance = detail::time_resolution<Real>(tau);
+    if (fabs(fabs(force) - r_) <= b_ * (2 * tolerance + Work(1e-15))) {
+      const int near = detail::ForceCrossings<Work>(crosses_, alpha_).crossing_near(tau, tolerance);
+      if (near != 2) {
+        merged = near != 0;
+        return near;
+      }
     }
   }
-  const Work force = b_ * sin(tau);  // velocity units, like r_
   if (force > r_) return 1;
   if (force < -r_) return -1;
   return 0;
 }
 
 template <class Real>
-bool BasicExactEngine<Real>::find_slip_end(Work& tau_stop, int& direction) {
+auto BasicExactEngine<Real>::normalised_phase(const Work& tau, int s) const -> Work {
+  // Only compared with other such phases within kPredictionWindow: the period
+  // count is taken in double (see ForceCrossings::periods_in).
+  const Work two_pi = boost::math::constants::two_pi<Work>();
+  const Work shifted = s > 0 ? tau : tau - boost::math::constants::pi<Work>();
+  const Work periods(std::floor(static_cast<double>(shifted / two_pi)));
+  return shifted - two_pi * periods;
+}
+
+namespace detail {
+// A prediction is used for starts within this many radians of its own (its
+// first-order guess is then off by ~1e-3 at worst, which Halley's method
+// removes in two steps).
+constexpr double kPredictionWindow = 0.05;
+}  // namespace detail
+
+template <class Real>
+auto BasicExactEngine<Real>::prediction_for(const Work& phase) const -> const StopPrediction* {
   using std::fabs;
-  const int s = sign_;
-  const PhaseLaw<Work> law(model_, s > 0 ? PhaseKind::slip_forward : PhaseKind::slip_backward,
-                           tau_, x_, v_);
+  for (const StopPrediction& p : predictions_)
+    if (p.valid && fabs(phase - p.phase) < Work(detail::kPredictionWindow)) return &p;
+  return nullptr;
+}
+
+template <class Real>
+void BasicExactEngine<Real>::remember_stop(const Law& law, const Work& phase, const Point& root) {
+  // Only slips from rest: their stop depends on the start time alone.
+  if (v_ != 0 || !(root.slope < 0)) return;
+  const int s = law.sign();
+  // F(a, tau) = s b (cos a - cos tau) - r (tau - a) = 0 at the stop:
+  // d tau / d a = (s b sin a - r) / (s b sin tau - r).
+  const Work dtau_da = (Work(s) * b_ * law.sin_begin() - r_) / root.slope;
+  StopPrediction* slot = nullptr;
+  for (StopPrediction& p : predictions_)
+    if (&p == prediction_for(phase)) slot = &p;
+  if (slot == nullptr) {
+    slot = &predictions_[next_prediction_slot_];
+    next_prediction_slot_ = (next_prediction_slot_ + 1) % static_cast<int>(predictions_.size());
+  }
+  *slot = {true, phase, root.h, dtau_da - 1};
+}
+
+template <class Real>
+bool BasicExactEngine<Real>::halley_root(const Law& law, const Work& guess, Work lo, Work hi,
+                                         Point& root) {
+  using std::fabs;
+  const Work eps = std::numeric_limits<Work>::epsilon();
+  Work x = guess;
+  for (int iteration = 0; iteration < 6; ++iteration) {
+    ++summary_.root_function_calls;
+    const Point p = law.point(x);
+    if (p.speed == 0) {
+      root = p;
+      return true;
+    }
+    (p.speed > 0 ? lo : hi) = x;
+    const Work f = p.speed;
+    const Work d1 = p.slope;
+    const Work d2 = p.curvature;
+    if (!(d1 < 0)) return false;  // not on the falling flank the bracket promises
+    const Work denominator = 2 * d1 * d1 - f * d2;
+    if (!(denominator > 0)) return false;
+    const Work step = -2 * f * d1 / denominator;
+    const Work next = x + step;
+    if (!(next >= lo && next <= hi)) return false;
+    // Converged: the second and third derivatives of s v are at most b in
+    // size, so with K = b / |slope| the error left after this step is below
+    // (K/6 + K^2/4) |e|^3, where the error e of x is within 1% of the step
+    // while K |step| is small. Accept once that is an eighth of an ulp of the
+    // work type; the state at the root then follows from this point by a
+    // rotation (no further sin_cos).
+    // (Written times slope^2, without divisions.)
+    const Work size = fabs(step);
+    const Work slope = -d1;
+    if (size <= Work(1e-3) && b_ * size <= Work(1e-3) * slope) {
+      const Work e = size * Work(1.01);
+      const Work bound = (b_ * slope / 6 + b_ * b_ / 4) * e * e * e;
+      const Work scale = fabs(next) > 1 ? Work(fabs(next)) : Work(1);
+      if (bound <= eps * scale * slope * slope / 8) {
+        // Shift by the step as rounded into `next` (exact: next and x are
+        // close), so sin, cos belong to the stored root time itself.
+        root = law.shifted(p, next - x);
+        return true;
+      }
+    }
+    x = next;
+  }
+  return false;
+}
+
+template <class Real>
+auto BasicExactEngine<Real>::slip_root(const Law& law, Work lo, Work hi) -> Point {
+  const Work phase = v_ == 0 ? normalised_phase(tau_, law.sign()) : Work(0);
+  if (v_ == 0) {
+    if (const StopPrediction* p = prediction_for(phase)) {
+      const Work guess = tau_ + p->length + p->dlength_dstart * (phase - p->phase);
+      Point root;
+      if (guess > lo && guess < hi && halley_root(law, guess, lo, hi, root)) {
+        ++summary_.predicted_stops;
+        remember_stop(law, phase, root);
+        return root;
+      }
+    }
+  }
+  // No prediction (a first stop, a transient) or it did not settle: the
+  // bracketing solver, which cannot fail on [lo, hi].
   const auto speed = [&law](const Work& tau) { return law.speed_along_slip(tau); };
   const auto slope = [&law](const Work& tau) { return law.speed_slope(tau); };
+  const Work tau_root = detail::checked(detail::decreasing_root<Work>(
+                                            speed, slope, lo, hi, summary_.root_function_calls))
+                            .root;
+  const Point root = law.point(tau_root);
+  remember_stop(law, phase, root);
+  return root;
+}
+
+template <class Real>
+auto BasicExactEngine<Real>::speed_at_critical(const Law& law, const Work& tau, bool minimum)
+    -> Work {
+  using std::fabs;
+  ++summary_.sign_tests;
+  const int s = law.sign();
+  // At a minimum of s v, cos tau = s cos alpha; at a maximum, -s cos alpha.
+  const Work cos_tau = Work(minimum ? s : -s) * cos_alpha_;
+  const Work h = tau - tau_;
+  const Work value = Work(s) * (v_ + b_ * (law.cos_begin() - cos_tau)) - r_ * h;
+  // Rounding of the terms (the carried sin, cos of the start included): the
+  // sign is certain beyond this; within it, the cancellation-free form.
+  const Work eps = std::numeric_limits<Work>::epsilon();
+  const Work bound = 512 * eps * (fabs(v_) + 2 * b_ + r_ * (fabs(h) + fabs(tau)));
+  if (fabs(value) > bound) return value;
+  return law.point(tau).speed;
+}
+
+template <class Real>
+bool BasicExactEngine<Real>::find_slip_end(const Law& law, Point& end, int& direction) {
+  using std::fabs;
+  const int s = sign_;
   const Work resolution = detail::time_resolution<Real>(tau_);
 
   // s v(tau) >= s v_a + s b cos a - b - r (tau - a): no stop before `lower`
@@ -197,19 +341,12 @@ bool BasicExactEngine<Real>::find_slip_end(Work& tau_stop, int& direction) {
     const bool horizon = bound >= tau_end_;
     const Work piece_end = horizon ? tau_end_ : bound;
     ++summary_.sign_tests;
-    const Work end_speed = speed(piece_end);
-    if (end_speed > 0) {
+    const Point end_point = law.point(piece_end);
+    if (end_point.speed > 0) {
       assert(horizon && "the closed-form upper bound of a monotone slip must bracket its stop");
       return false;
     }
-    if (end_speed == 0) {
-      tau_stop = piece_end;
-      direction = 0;
-      return true;
-    }
-    tau_stop = detail::checked(detail::decreasing_root<Work>(speed, slope, piece_begin, piece_end,
-                                                             summary_.root_function_calls))
-                   .root;
+    end = end_point.speed == 0 ? end_point : slip_root(law, piece_begin, piece_end);
     direction = 0;  // nothing breaks away when lambda >= 1
     return true;
   }
@@ -225,30 +362,37 @@ bool BasicExactEngine<Real>::find_slip_end(Work& tau_stop, int& direction) {
   const detail::ForceCrossings<Work> crossings(crosses_, alpha_);
   for (;;) {
     if (piece_begin >= tau_end_) return false;
-    const Work critical = crossings.next_critical(s, search_from);
-    const bool horizon = critical >= tau_end_;
-    const Work piece_end = horizon ? tau_end_ : critical;
-    ++summary_.sign_tests;
-    const Work end_speed = speed(piece_end);
+    const auto critical = crossings.next_critical_point(s, search_from);
+    const bool horizon = critical.tau >= tau_end_;
+    const Work piece_end = horizon ? tau_end_ : critical.tau;
+    // At a critical time s v follows from closed-form sin and cos; at the
+    // horizon it takes a full evaluation.
+    Point end_point;
+    Work end_speed;
+    if (horizon) {
+      ++summary_.sign_tests;
+      end_point = law.point(piece_end);
+      end_speed = end_point.speed;
+    } else {
+      end_speed = speed_at_critical(law, critical.tau, critical.minimum);
+    }
     if (end_speed <= 0) {
-      Work stop = piece_end;
-      if (end_speed < 0)
-        stop = detail::checked(detail::decreasing_root<Work>(speed, slope, piece_begin, piece_end,
-                                                             summary_.root_function_calls))
-                   .root;
+      const Point stop = end_speed < 0 ? slip_root(law, piece_begin, piece_end)
+                         : horizon     ? end_point
+                                       : law.point(piece_end);
       // v = 0 where the slip goes on in the same direction: a touch at a
       // minimum of s v (a breakaway time in direction s). Not a stop.
       bool merged = false;
-      const int next = direction_at_rest(stop, merged);
+      const int next = direction_at_rest(stop.tau, stop.at.sin, merged);
       if (next == s) {
         ++summary_.touches;
         if (horizon) return false;  // the slip goes on to the horizon
-        piece_begin = critical;
-        search_from = critical + resolution;
+        piece_begin = critical.tau;
+        search_from = critical.tau + resolution;
         continue;
       }
       summary_.merged_sticks += merged;
-      tau_stop = stop;
+      end = stop;
       direction = next;
       return true;
     }
@@ -260,7 +404,8 @@ bool BasicExactEngine<Real>::find_slip_end(Work& tau_stop, int& direction) {
 
 template <class Real>
 bool BasicExactEngine<Real>::emit(BasicPhase<Real>& phase, PhaseKind kind, const Work& tau_end,
-                                  const Work& x_end, const Work& v_end, bool at_horizon) {
+                                  const Work& x_end, const Work& v_end, const Work& acceleration,
+                                  bool at_horizon) {
   const Real t_end = at_horizon ? t_end_ : Real(tau_end / omega_);
   if (!(t_end > t_current_)) return false;  // shorter than the output resolution
   phase.kind = kind;
@@ -273,9 +418,7 @@ bool BasicExactEngine<Real>::emit(BasicPhase<Real>& phase, PhaseKind kind, const
   t_current_ = t_end;
   ++summary_.phases;
   ++summary_.phases_by_kind[static_cast<int>(kind)];
-  const PhaseLaw<Work> law(model_, kind, tau_, x_, v_);
-  summary_.final_state = {phase.t_end, phase.x_end, phase.v_end, Real(law.acceleration(tau_end)),
-                          kind};
+  summary_.final_state = {phase.t_end, phase.x_end, phase.v_end, Real(acceleration), kind};
   return true;
 }
 
@@ -313,13 +456,19 @@ bool BasicExactEngine<Real>::next(BasicPhase<Real>& phase) {
         if (!breaks) breakaway = tau_end_;
       }
       const Work end = breaks ? breakaway : tau_end_;
-      const bool emitted = emit(phase, PhaseKind::stick, end, x_, Work(0), !breaks);
+      const bool emitted = emit(phase, PhaseKind::stick, end, x_, Work(0), Work(0), !breaks);
       if (breaks) {
         ++summary_.breakaways;
         mode_ = Mode::slip;
         sign_ = direction;
         tau_ = breakaway;
         v_ = 0;
+        // sin, cos of the breakaway time as stored (rounded), not of the
+        // exact one: the slip then starts from rest at the stored time with
+        // its true force, an error of second order only (the slope of v is
+        // zero at a breakaway).
+        start_trig_ = sin_cos(tau_);
+        carried_starts_ = 0;
       } else {
         done_ = true;
       }
@@ -328,11 +477,12 @@ bool BasicExactEngine<Real>::next(BasicPhase<Real>& phase) {
     }
 
     const PhaseKind kind = sign_ > 0 ? PhaseKind::slip_forward : PhaseKind::slip_backward;
-    Work tau_stop = tau_end_;
+    const Law law(omega_, b_, r_, kind, tau_, x_, v_, start_trig_);
+    Point end;
     int next = 0;
     bool stops = false;
     try {
-      stops = find_slip_end(tau_stop, next);
+      stops = find_slip_end(law, end, next);
     } catch (const detail::LostBracket&) {
       done_ = true;
       summary_.termination = Termination::numerical_failure;
@@ -340,14 +490,14 @@ bool BasicExactEngine<Real>::next(BasicPhase<Real>& phase) {
                          detail::to_text(Real(tau_ / omega_)) + " (please report this model)";
       return false;
     }
-    const PhaseLaw<Work> law(model_, kind, tau_, x_, v_);
-    const Work end = stops ? tau_stop : tau_end_;
+    if (!stops) end = law.point(tau_end_);
     const Work x_end = law.position(end);
-    const Work v_end = stops ? Work(0) : law.velocity(end);
+    const Work v_end = stops ? Work(0) : Work(law.sign()) * end.speed;
     // A stop that rounds to t_end in Real ends the run there (found by
     // fuzzing: with max_phases it was reported as a phase limit).
-    const bool at_horizon = !stops || tau_stop >= tau_end_ || !(Real(tau_stop / omega_) < t_end_);
-    const bool emitted = emit(phase, kind, end, x_end, v_end, at_horizon);
+    const bool at_horizon = !stops || end.tau >= tau_end_ || !(Real(end.tau / omega_) < t_end_);
+    const bool emitted =
+        emit(phase, kind, end.tau, x_end, v_end, law.acceleration_at(end.at), at_horizon);
     if (at_horizon) {
       done_ = true;
     } else {
@@ -355,9 +505,19 @@ bool BasicExactEngine<Real>::next(BasicPhase<Real>& phase) {
       if (next == -sign_) ++summary_.reversals;
       mode_ = next != 0 ? Mode::slip : Mode::stick;
       sign_ = next;
-      tau_ = tau_stop;
+      tau_ = end.tau;
       x_ = x_end;
       v_ = 0;
+      if (next != 0) {
+        // The next slip starts here: carry sin, cos of the stop, recomputed
+        // fresh now and then so rounding cannot build up.
+        if (++carried_starts_ < 64) {
+          start_trig_ = end.at;
+        } else {
+          start_trig_ = sin_cos(tau_);
+          carried_starts_ = 0;
+        }
+      }
     }
     if (emitted) return true;
   }

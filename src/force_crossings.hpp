@@ -39,8 +39,9 @@ class ForceCrossings {
   // The earliest breakaway time >= tau (exact grid: base + 2 pi k).
   // Sets `direction` to +1 or -1. Requires crosses().
   Work next_breakaway(const Work& tau, int& direction) const {
-    const Work forward = next_at_or_after(alpha_, tau);
-    const Work backward = next_at_or_after(pi() + alpha_, tau);
+    const Work k = periods_in(tau);
+    const Work forward = next_at_or_after(alpha_, tau, k);
+    const Work backward = next_at_or_after(pi() + alpha_, tau, k);
     direction = forward <= backward ? 1 : -1;
     return forward <= backward ? forward : backward;
   }
@@ -54,38 +55,58 @@ class ForceCrossings {
     int direction = 0;
     if (next_breakaway(tau - tolerance, direction) - tau <= tolerance) return direction;
     const Work from = tau - tolerance;
-    const Work release_forward = next_at_or_after(pi() - alpha_, from);
-    const Work release_backward = next_at_or_after(two_pi() - alpha_, from);
+    const Work k = periods_in(from);
+    const Work release_forward = next_at_or_after(pi() - alpha_, from, k);
+    const Work release_backward = next_at_or_after(two_pi() - alpha_, from, k);
     if (release_forward - tau <= tolerance || release_backward - tau <= tolerance) return 0;
     return 2;
   }
 
   // The earliest critical time of a slip of sign s strictly after tau.
   // Requires crosses().
-  Work next_critical(int s, const Work& tau) const {
+  Work next_critical(int s, const Work& tau) const { return next_critical_point(s, tau).tau; }
+
+  // The same, saying whether s v has a minimum there (a breakaway time in
+  // direction s: sin tau = s lambda, cos tau = s cos alpha) or a maximum
+  // (sin tau = s lambda, cos tau = -s cos alpha).
+  struct Critical {
+    Work tau;
+    bool minimum;
+  };
+  Critical next_critical_point(int s, const Work& tau) const {
     const Work shift = s > 0 ? Work(0) : pi();
-    const Work minimum = next_after(shift + alpha_, tau);
-    const Work maximum = next_after(shift + pi() - alpha_, tau);
-    return minimum < maximum ? minimum : maximum;
+    const Work k = periods_in(tau);
+    const Work minimum = next_after(shift + alpha_, tau, k);
+    const Work maximum = next_after(shift + pi() - alpha_, tau, k);
+    return minimum < maximum ? Critical{minimum, true} : Critical{maximum, false};
   }
 
  private:
   static Work pi() { return boost::math::constants::pi<Work>(); }
   static Work two_pi() { return boost::math::constants::two_pi<Work>(); }
 
-  // Smallest base + 2 pi k >= tau.
-  static Work next_at_or_after(const Work& base, const Work& tau) {
-    using std::ceil;
-    Work t = base + two_pi() * ceil((tau - base) / two_pi());
-    if (t < tau) t += two_pi();  // guards the rounding of the quotient
-    return t;
+  // x / 2 pi rounded to an integer, give or take one: one estimate serves
+  // every base in [0, 2 pi] (the exact k is then within 2 of it). Taken with
+  // llrint, as an x87 floor or ceil costs as much as a cos call, and these
+  // run several times per event.
+  static Work periods_in(const Work& x) {
+    using std::llrint;
+    const Work inverse_two_pi = boost::math::constants::one_div_two_pi<Work>();
+    return Work(llrint(x * inverse_two_pi));
   }
-  // Smallest base + 2 pi k > tau.
-  static Work next_after(const Work& base, const Work& tau) {
-    using std::floor;
-    Work t = base + two_pi() * (floor((tau - base) / two_pi()) + 1);
-    if (t <= tau) t += two_pi();
-    return t;
+
+  // Smallest base + 2 pi k >= tau, for 0 <= base <= 2 pi, from the estimate
+  // k0 = periods_in(tau) (the loops make k exact; each runs at most twice).
+  static Work next_at_or_after(const Work& base, const Work& tau, Work k) {
+    while (base + two_pi() * (k - 1) >= tau) k -= 1;
+    while (base + two_pi() * k < tau) k += 1;
+    return base + two_pi() * k;
+  }
+  // Smallest base + 2 pi k > tau, likewise.
+  static Work next_after(const Work& base, const Work& tau, Work k) {
+    while (base + two_pi() * (k - 1) > tau) k -= 1;
+    while (base + two_pi() * k <= tau) k += 1;
+    return base + two_pi() * k;
   }
 
   bool crosses_;

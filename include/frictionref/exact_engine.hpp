@@ -47,6 +47,8 @@ struct BasicSummary {
   std::uint64_t touches = 0;          // v = 0 at an instant, slip goes on the same way (grazing)
   std::uint64_t sign_tests = 0;       // velocity evaluations at piece ends (bracketing)
   std::uint64_t root_function_calls = 0;  // velocity evaluations inside root finding
+  std::uint64_t predicted_stops = 0;      // stops found by Halley steps from a prediction
+                                          // (the rest by GSL Brent + polish)
 
   BasicState<Real> final_state;  // at the last phase end (t_end unless terminated early)
 
@@ -76,15 +78,44 @@ class BasicExactEngine {
  private:
   enum class Mode { stick, slip };
 
-  // At v = 0 at forcing phase tau: returns the slip direction (+1/-1) if the
-  // force beats friction (or a breakaway is within the time resolution), 0 to stick.
-  int direction_at_rest(const Work& tau, bool& merged) const;
+  using Law = PhaseLaw<Work>;
+  using Point = typename Law::Point;
+
+  // At v = 0 at forcing phase tau (sin tau given): returns the slip direction
+  // (+1/-1) if the force beats friction (or a breakaway is within the time
+  // resolution), 0 to stick.
+  int direction_at_rest(const Work& tau, const Work& sin_tau, bool& merged) const;
   // Earliest stop of the current slip in (tau_, tau_end_]; false if none.
-  // On a stop, `direction` is what follows it (direction_at_rest).
-  bool find_slip_end(Work& tau_stop, int& direction);
+  // On a stop, `end` is the point there and `direction` what follows it
+  // (direction_at_rest).
+  bool find_slip_end(const Law& law, Point& end, int& direction);
+  // s v at a critical time (sin, cos there in closed form), trusted only when
+  // clear of zero by its rounding bound; otherwise the full evaluation.
+  Work speed_at_critical(const Law& law, const Work& tau, bool minimum);
+  // The root of s v on [lo, hi] (s v(lo) > 0 >= s v(hi), s v decreasing):
+  // predicted Halley steps when a prediction applies, else GSL Brent + polish.
+  Point slip_root(const Law& law, Work lo, Work hi);
+  // Halley's method from `guess`, kept inside [lo, hi]; false if it does not
+  // settle within a few steps (the caller then takes the bracketing solver).
+  bool halley_root(const Law& law, const Work& guess, Work lo, Work hi, Point& root);
   // Fills `phase` unless it is shorter than the resolution of Real.
   bool emit(BasicPhase<Real>& phase, PhaseKind kind, const Work& tau_end, const Work& x_end,
-            const Work& v_end, bool at_horizon);
+            const Work& v_end, const Work& acceleration, bool at_horizon);
+
+  // A slip from rest that starts at the same forcing phase (mod 2 pi, and mod
+  // pi with the sign flipped: the motion is odd under t -> t + pi / w) as an
+  // earlier one stops at nearly the same time after its start; in a steady
+  // state, exactly. Kept for a few start phases; dh_da is the derivative of
+  // the slip's length with respect to its start, for a first-order guess.
+  struct StopPrediction {
+    bool valid = false;
+    Work phase = 0;  // start phase, normalised to [0, 2 pi) for a forward slip
+    Work length = 0;
+    Work dlength_dstart = 0;
+  };
+  Work normalised_phase(const Work& tau, int s) const;
+  const StopPrediction* prediction_for(const Work& phase) const;
+  void remember_stop(const Law& law, const Work& phase, const Point& root);
 
   BasicModel<Real> model_;
   Real t_end_;
@@ -100,6 +131,14 @@ class BasicExactEngine {
   Work tau_end_;
   Real t_current_;      // user time of tau_ as emitted (t0 exactly at the start)
   Work tau_, x_, v_;    // current phase start
+  SinCos<Work> start_trig_;  // sin, cos of tau_
+  // Slip starts whose sin, cos came from the previous slip by the sum formulas
+  // (cheap, but rounding accumulates); recomputed fresh every 64.
+  int carried_starts_ = 0;
+  Work cos_alpha_ = 0;  // cos alpha = sqrt(1 - lambda^2): cos of the critical times, +-
+                        // (sin there is +-lambda; speed_at_critical)
+  std::array<StopPrediction, 4> predictions_{};
+  int next_prediction_slot_ = 0;
   Mode mode_ = Mode::stick;
   int sign_ = 0;        // slip direction when mode_ == slip
   bool done_ = false;
