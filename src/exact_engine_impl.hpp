@@ -190,7 +190,8 @@ auto BasicExactEngine<Real>::normalised_phase(const Work& tau, int s) const -> W
   // count is taken in double (see ForceCrossings::periods_in).
   const Work two_pi = boost::math::constants::two_pi<Work>();
   const Work shifted = s > 0 ? tau : tau - boost::math::constants::pi<Work>();
-  const Work periods(std::floor(static_cast<double>(shifted / two_pi)));
+  const Work periods(
+      std::floor(static_cast<double>(shifted * boost::math::constants::one_div_two_pi<Work>())));
   return shifted - two_pi * periods;
 }
 
@@ -217,9 +218,8 @@ void BasicExactEngine<Real>::remember_stop(const Law& law, const Work& phase, co
   // F(a, tau) = s b (cos a - cos tau) - r (tau - a) = 0 at the stop:
   // d tau / d a = (s b sin a - r) / (s b sin tau - r).
   const Work dtau_da = (Work(s) * b_ * law.sin_begin() - r_) / root.slope;
-  StopPrediction* slot = nullptr;
-  for (StopPrediction& p : predictions_)
-    if (&p == prediction_for(phase)) slot = &p;
+  // The slot of this start phase, else the oldest one.
+  StopPrediction* slot = const_cast<StopPrediction*>(prediction_for(phase));
   if (slot == nullptr) {
     slot = &predictions_[next_prediction_slot_];
     next_prediction_slot_ = (next_prediction_slot_ + 1) % static_cast<int>(predictions_.size());
@@ -276,16 +276,15 @@ bool BasicExactEngine<Real>::halley_root(const Law& law, const Work& guess, Work
 }
 
 template <class Real>
-auto BasicExactEngine<Real>::slip_root(const Law& law, Work lo, Work hi) -> Point {
+void BasicExactEngine<Real>::slip_root(const Law& law, Work lo, Work hi, Point& root) {
   const Work phase = v_ == 0 ? normalised_phase(tau_, law.sign()) : Work(0);
   if (v_ == 0) {
     if (const StopPrediction* p = prediction_for(phase)) {
       const Work guess = tau_ + p->length + p->dlength_dstart * (phase - p->phase);
-      Point root;
       if (guess > lo && guess < hi && halley_root(law, guess, lo, hi, root)) {
         ++summary_.predicted_stops;
         remember_stop(law, phase, root);
-        return root;
+        return;
       }
     }
   }
@@ -296,9 +295,8 @@ auto BasicExactEngine<Real>::slip_root(const Law& law, Work lo, Work hi) -> Poin
   const Work tau_root = detail::checked(detail::decreasing_root<Work>(
                                             speed, slope, lo, hi, summary_.root_function_calls))
                             .root;
-  const Point root = law.point(tau_root);
+  root = law.point(tau_root);
   remember_stop(law, phase, root);
-  return root;
 }
 
 template <class Real>
@@ -346,7 +344,11 @@ bool BasicExactEngine<Real>::find_slip_end(const Law& law, Point& end, int& dire
       assert(horizon && "the closed-form upper bound of a monotone slip must bracket its stop");
       return false;
     }
-    end = end_point.speed == 0 ? end_point : slip_root(law, piece_begin, piece_end);
+    if (end_point.speed == 0) {
+      end = end_point;
+    } else {
+      slip_root(law, piece_begin, piece_end, end);
+    }
     direction = 0;  // nothing breaks away when lambda >= 1
     return true;
   }
@@ -377,13 +379,15 @@ bool BasicExactEngine<Real>::find_slip_end(const Law& law, Point& end, int& dire
       end_speed = speed_at_critical(law, critical.tau, critical.minimum);
     }
     if (end_speed <= 0) {
-      const Point stop = end_speed < 0 ? slip_root(law, piece_begin, piece_end)
-                         : horizon     ? end_point
-                                       : law.point(piece_end);
+      if (end_speed < 0) {
+        slip_root(law, piece_begin, piece_end, end);
+      } else {
+        end = horizon ? end_point : law.point(piece_end);
+      }
       // v = 0 where the slip goes on in the same direction: a touch at a
       // minimum of s v (a breakaway time in direction s). Not a stop.
       bool merged = false;
-      const int next = direction_at_rest(stop.tau, stop.at.sin, merged);
+      const int next = direction_at_rest(end.tau, end.at.sin, merged);
       if (next == s) {
         ++summary_.touches;
         if (horizon) return false;  // the slip goes on to the horizon
@@ -392,7 +396,6 @@ bool BasicExactEngine<Real>::find_slip_end(const Law& law, Point& end, int& dire
         continue;
       }
       summary_.merged_sticks += merged;
-      end = stop;
       direction = next;
       return true;
     }

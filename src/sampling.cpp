@@ -50,6 +50,7 @@ UniformSampler::UniformSampler(const Model& model, const GridOptions& options)
     : model_(model), options_(options), engine_(model, options.t_end) {
   options.validate(model.t0);
   have_phase_ = engine_.next(phase_);
+  if (have_phase_) law_.emplace(phase_law(model_, phase_));
 }
 
 double UniformSampler::grid_time(std::uint64_t i) const {
@@ -62,8 +63,10 @@ bool UniformSampler::finish() {
 }
 
 bool UniformSampler::advance_to(double t) {
-  while (t >= phase_.t_end && phase_.t_end < options_.t_end)
+  while (t >= phase_.t_end && phase_.t_end < options_.t_end) {
     if (!engine_.next(phase_)) return false;
+    law_.emplace(phase_law(model_, phase_));
+  }
   return true;
 }
 
@@ -79,11 +82,11 @@ bool UniformSampler::next(State& state) {
   if (options_.include_events && phase_.t_end < t) {
     const double boundary = phase_.t_end;
     if (!advance_to(boundary)) return finish();
-    state = evaluate(model_, phase_, boundary);
+    state = evaluate(model_, *law_, phase_, boundary);
     return true;
   }
   if (!advance_to(t)) return finish();
-  state = evaluate(model_, phase_, t);
+  state = evaluate(model_, *law_, phase_, t);
   if (on_grid) {
     ++index_;
   } else {

@@ -94,7 +94,7 @@ class BasicExactEngine {
   Work speed_at_critical(const Law& law, const Work& tau, bool minimum);
   // The root of s v on [lo, hi] (s v(lo) > 0 >= s v(hi), s v decreasing):
   // predicted Halley steps when a prediction applies, else GSL Brent + polish.
-  Point slip_root(const Law& law, Work lo, Work hi);
+  void slip_root(const Law& law, Work lo, Work hi, Point& root);
   // Halley's method from `guess`, kept inside [lo, hi]; false if it does not
   // settle within a few steps (the caller then takes the bracketing solver).
   bool halley_root(const Law& law, const Work& guess, Work lo, Work hi, Point& root);

@@ -36,20 +36,34 @@ struct BasicState {
 using Phase = BasicPhase<double>;
 using State = BasicState<double>;
 
-// State at time t inside `phase` (t_begin <= t <= t_end), in closed form.
-// At t_end it returns the phase's stored end state exactly.
+// The law of `phase` (built once per phase by samplers; evaluate() below
+// builds it for each call).
 template <class Real>
-BasicState<Real> evaluate(const BasicModel<Real>& model, const BasicPhase<Real>& phase,
-                          const Real& t) {
+PhaseLaw<work_t<Real>> phase_law(const BasicModel<Real>& model, const BasicPhase<Real>& phase) {
+  using Work = work_t<Real>;
+  const Work omega(model.omega);
+  return PhaseLaw<Work>(model, phase.kind, omega * Work(phase.t_begin), Work(phase.x_begin),
+                        Work(phase.v_begin));
+}
+
+// State at time t inside `phase` (t_begin <= t <= t_end) from its law, in
+// closed form: one sin_cos. At t_end it returns the phase's stored end state
+// exactly, and at t_begin its start state.
+template <class Real>
+BasicState<Real> evaluate(const BasicModel<Real>& model, const PhaseLaw<work_t<Real>>& law,
+                          const BasicPhase<Real>& phase, const Real& t) {
   using Work = work_t<Real>;
   BasicState<Real> state;
   state.t = t;
   state.phase = phase.kind;
-  const Work omega(model.omega);
-  const PhaseLaw<Work> law(model, phase.kind, omega * Work(phase.t_begin), Work(phase.x_begin),
-                           Work(phase.v_begin));
-  const Work tau = omega * Work(t);
-  state.a = Real(law.acceleration(tau));
+  if (phase.kind == PhaseKind::stick) {
+    state.x = t == phase.t_end ? phase.x_end : phase.x_begin;
+    state.v = t == phase.t_end ? phase.v_end : t == phase.t_begin ? phase.v_begin : 0;
+    state.a = 0;
+    return state;
+  }
+  const auto point = law.point(Work(model.omega) * Work(t));
+  state.a = Real(law.acceleration_at(point.at));
   if (t == phase.t_end) {
     state.x = phase.x_end;
     state.v = phase.v_end;
@@ -57,10 +71,18 @@ BasicState<Real> evaluate(const BasicModel<Real>& model, const BasicPhase<Real>&
     state.x = phase.x_begin;
     state.v = phase.v_begin;
   } else {
-    state.x = Real(law.position(tau));
-    state.v = Real(law.velocity(tau));
+    state.x = Real(law.position(point));
+    state.v = Real(Work(law.sign()) * point.speed);  // s (s v) = v
   }
   return state;
+}
+
+// State at time t inside `phase` (t_begin <= t <= t_end), in closed form.
+// At t_end it returns the phase's stored end state exactly.
+template <class Real>
+BasicState<Real> evaluate(const BasicModel<Real>& model, const BasicPhase<Real>& phase,
+                          const Real& t) {
+  return evaluate(model, phase_law(model, phase), phase, t);
 }
 
 }  // namespace frictionref

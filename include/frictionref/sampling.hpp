@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "frictionref/exact_engine.hpp"
@@ -47,6 +48,8 @@ class UniformSampler {
   ExactEngine engine_;
   Phase phase_;
   bool have_phase_ = false;
+  // The law of phase_, built once per phase (a sample then costs one sin_cos).
+  std::optional<PhaseLaw<long double>> law_;
   std::uint64_t index_ = 0;
   bool finished_ = false;
 };

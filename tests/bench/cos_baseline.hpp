@@ -10,7 +10,8 @@ namespace frictionref::bench {
 
 // Seconds per std::cos(double) call on arguments spread over [0, 2000 pi)
 // (glibc's fast path; forcing phases of 1e4 periods lie there). Measured once,
-// on first use, as the fastest of several timed loops.
+// on first use, as the fastest of several timed loops (thread CPU time, as
+// Google Benchmark's rates use).
 double cos_call_seconds();
 
 // A counter that Google Benchmark reports as the time per item in cos calls:
