@@ -9,7 +9,9 @@
 //    as above) and, with --stiff-record, its velocity record (t, v as raw float64 pairs)
 //    for the event extraction of peer_common.py.
 //
-// Writes one JSON object to --out.
+// Writes one JSON object to --out: the double engine's events ("events", 17 digits) and the
+// 50-digit engine's ("hp_event_times", 30 digits, as strings), which are the reference the
+// peers' event times are measured against.
 //
 // Usage: ours --lambda L --v0 V --t-end T --out FILE [--min-time S] [--stiff-record FILE]
 #include <frictionref/frictionref.hpp>
@@ -21,6 +23,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -200,6 +204,12 @@ int main(int argc, char** argv) {
   std::fprintf(f, "  \"events\": [");
   for (std::size_t i = 0; i < events.size(); ++i)
     std::fprintf(f, "%s\n    [\"%s\", %.17g]", i ? "," : "", events[i].first, events[i].second);
+  std::fprintf(f, "\n  ],\n  \"hp_event_times\": [");
+  for (std::size_t i = 0; i < hp_events.size(); ++i) {
+    std::ostringstream text;
+    text << std::setprecision(30) << hp_events[i].second;
+    std::fprintf(f, "%s\n    [\"%s\", \"%s\"]", i ? "," : "", hp_events[i].first, text.str().c_str());
+  }
   std::fprintf(f, "\n  ]\n}\n");
   if (std::fclose(f) != 0 || std::rename(tmp.c_str(), out.c_str()) != 0) {
     std::perror(out.c_str());

@@ -11,6 +11,7 @@
 Uses only the standard library and numpy.
 """
 
+import decimal
 import json
 import math
 import os
@@ -140,13 +141,16 @@ def events_from_record(t, v, threshold, min_stick, t_end_is_record_end=True):
 def match_events(exact, peer, window=0.5):
     """Matches a peer's events to the exact ones.
 
+    exact: [(kind, t)] or [(kind, t, t_reference)] with t_reference a decimal string (the
+    50-digit engine's time); the error is then measured against t_reference, exactly.
+
     Returns a dict: same_sequence (the kinds agree one to one), max_abs_error over the
     matched events (and where), matched count, missed (exact events without a peer event
     of the same kind within `window` time units) and extra (peer events without an exact
     one), each counted by kind, and a one-line verdict.
     """
-    kinds_exact = [k for k, _ in exact]
-    kinds_peer = [k for k, _ in peer]
+    kinds_exact = [e[0] for e in exact]
+    kinds_peer = [e[0] for e in peer]
     result = {"exact_count": len(exact), "peer_count": len(peer)}
     pairs = []
     missed, extra = [], []
@@ -155,7 +159,8 @@ def match_events(exact, peer, window=0.5):
     else:
         i = j = 0
         while i < len(exact) and j < len(peer):
-            (ke, te), (kp, tp) = exact[i], peer[j]
+            ke, te = exact[i][0], exact[i][1]
+            kp, tp = peer[j][0], peer[j][1]
             if ke == kp and abs(te - tp) <= window:
                 pairs.append((exact[i], peer[j]))
                 i += 1
@@ -169,8 +174,12 @@ def match_events(exact, peer, window=0.5):
         missed.extend(exact[i:])
         extra.extend(peer[j:])
     max_err, max_at, max_kind = 0.0, None, None
-    for (ke, te), (kp, tp) in pairs:
-        err = abs(tp - te)
+    for e, (kp, tp) in pairs:
+        ke, te = e[0], e[1]
+        if len(e) > 2:  # a high-precision reference time (a decimal string): exact difference
+            err = float(abs(decimal.Decimal(tp) - decimal.Decimal(e[2])))
+        else:
+            err = abs(tp - te)
         if err > max_err or max_at is None:
             max_err, max_at, max_kind = err, te, ke
     result["same_sequence"] = kinds_exact == kinds_peer
@@ -180,15 +189,16 @@ def match_events(exact, peer, window=0.5):
     result["max_error_kind"] = max_kind
     result["missed"] = count_kinds(missed)
     result["extra"] = count_kinds(extra)
-    result["first_missed"] = missed[0] if missed else None
-    result["first_extra"] = extra[0] if extra else None
+    result["first_missed"] = list(missed[0][:2]) if missed else None
+    result["first_extra"] = list(extra[0][:2]) if extra else None
     result["verdict"] = sequence_verdict(exact, peer, result)
     return result
 
 
 def count_kinds(events):
     counts = {}
-    for k, _ in events:
+    for e in events:
+        k = e[0]
         counts[k] = counts.get(k, 0) + 1
     return counts
 
@@ -216,12 +226,19 @@ def sequence_verdict(exact, peer, result):
     if result["extra"]:
         text += "; extra " + describe_counts(result["extra"])
     if result.get("first_missed"):
-        text += "; first missed %s at t = %.4f" % tuple(result["first_missed"])
+        text += "; first missed %s at t = %.4f" % tuple(result["first_missed"][:2])
     elif result.get("first_extra"):
-        text += "; first extra %s at t = %.4f" % tuple(result["first_extra"])
+        text += "; first extra %s at t = %.4f" % tuple(result["first_extra"][:2])
     return text
 
 
 def load_exact_events(results_dir, case_id):
+    """The reference events of a case: (kind, t_double, t_50digit_string) when the 50-digit
+    engine gave the same sequence as the double engine, else (kind, t_double)."""
     with open(os.path.join(results_dir, "ours-%s.json" % case_id)) as f:
-        return [tuple(e) for e in json.load(f)["events"]]
+        ours = json.load(f)
+    events = [tuple(e) for e in ours["events"]]
+    hp = ours.get("hp_event_times")
+    if ours.get("hp_same_sequence") and hp and len(hp) == len(events):
+        return [(k, t, h[1]) for (k, t), h in zip(events, hp)]
+    return events

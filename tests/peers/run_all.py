@@ -135,6 +135,14 @@ def package_versions():
     return versions
 
 
+def read_load():
+    try:
+        with open("/proc/loadavg") as f:
+            return f.read().split()[0]
+    except OSError:
+        return "?"
+
+
 def git_revision(repo):
     try:
         rev = subprocess.run(["git", "-C", repo, "rev-parse", "--short=12", "HEAD"],
@@ -200,9 +208,10 @@ def scipy_evals(r):
         text += ", njev %s, nlu %s" % (fmt_int(r["njev"]), fmt_int(r["nlu"]))
     text += "; %s event-fn" % fmt_int(r["gev"])
     if r.get("nudges"):
-        text += "; %s breakaway roots moved past the crossing" % fmt_int(r["nudges"])
+        text += "; %s slip starts moved past the crossing" % fmt_int(r["nudges"])
     if r.get("retries"):
-        text += "; %s slips retried with a first step" % fmt_int(r["retries"])
+        text += "; %s slip%s retried with a first step" % (fmt_int(r["retries"]),
+                                                          "" if r["retries"] == 1 else "s")
     return text
 
 
@@ -215,7 +224,7 @@ def cvode_evals(r):
 
 def build_rows(results, case_id):
     ours = load(os.path.join(results, "ours-%s.json" % case_id))
-    exact = [tuple(e) for e in ours["events"]]
+    exact = peer_common.load_exact_events(results, case_id)
     n_events = max(1, len(exact))
     rows = []
     rows.append({
@@ -287,7 +296,8 @@ def build_rows(results, case_id):
                              "Moreau-Jean time stepping, theta %g, h = %s" % (r["theta"], h),
                              "%s steps (one relay problem each)" % fmt_int(r["steps"])))
     for row in rows:
-        row["per_event"] = row["time"] / n_events if row.get("time") is not None else None
+        row["per_event"] = (row["time"] / n_events
+                            if row.get("time") is not None and not row.get("failed") else None)
     return ours, exact, rows
 
 
@@ -358,6 +368,10 @@ def write_report(args, results, commands, elapsed_runs):
     for p, v in versions.items():
         w("| `%s` | %s |" % (p, v))
     w("")
+    w("Load average (1 min) when the runs started: %s; when they ended: %s. "
+      "The machine may be shared with other work; a load well above 0 inflates the "
+      "times, the peers' and ours alike." % (args.load_start, read_load()))
+    w("")
     w("All runs are sequential (one core busy at a time). The full run of `run.sh` took "
       "%.0f s, of which %.0f s running the peers." % (args.script_seconds or 0, elapsed_runs)
       if args.script_seconds else
@@ -389,34 +403,50 @@ def write_report(args, results, commands, elapsed_runs):
       "peer at equal or better accuracy on the 1000-period case (lambda = 0.7, 2000 pi "
       "time units, %d events)." % len(exact))
     w("")
-    w("**What \"equal or better accuracy\" can mean here.** The engine's event times agree "
-      "with the 50-digit engine to %s in absolute time (%s relative to max(1, t)), i.e. to "
-      "the rounding of `t` (about 1 ulp at t ~ 6000, where 1 ulp = 9.1e-13). No peer comes "
-      "near that: an ODE solver's event time is only as good as its tolerance and its root "
-      "tolerance (CVODE locates roots to about 100 ulps of `t`), so **no peer reaches equal "
-      "accuracy, and a ratio at equal accuracy does not exist**. The comparison below is "
-      "therefore made against peers at *worse* accuracy than ours, which favours the peers." % (
-          fmt_err(ours["hp_max_abs_error"]), fmt_err(ours["hp_max_rel_error"])))
+    ours_err = ours["hp_max_abs_error"]
+    ulp_end = math.ulp(exact[-1][1]) if exact else 0.0
+    w("**What \"equal or better accuracy\" means here.** Every event time, ours and the "
+      "peers', is measured against the same reference: the 50-digit engine "
+      "(`BasicExactEngine<HighPrecision>`). Ours are within %s of it (%s relative to "
+      "max(1, t); 1 ulp of t is %s at the last event, t = %.0f). A peer run is *at equal or "
+      "better accuracy* if it got the whole sequence of stops and breakaways right and its "
+      "largest event-time error is at most max(ours, 1 ulp of t at the last event) = %s: "
+      "below that, two double-precision event times differ by no more than their own "
+      "rounding." % (
+          fmt_err(ours_err), fmt_err(ours["hp_max_rel_error"]), fmt_err(ulp_end),
+          exact[-1][1] if exact else 0, fmt_err(max(ours_err, ulp_end))))
     w("")
+    w("- Ours: **%s** for the whole run (%s per event), max error %s." % (
+        fmt_time(ours_time), fmt_time(ours_time / max(1, len(exact))), fmt_err(ours_err)))
     if correct:
+        equal_limit = max(ours_err, ulp_end)
+        equal = [r for r in correct if r["error"] is not None and r["error"] <= equal_limit]
         fastest = min(correct, key=lambda r: r["time"])
-        best = min(correct, key=lambda r: r["error"] if r["error"] is not None else 1e300)
+        best = min(correct, key=lambda r: (r["error"], r["time"]))
         ratio_fast = fastest["time"] / ours_time
         ratio_best = best["time"] / ours_time
-        w("- Ours: **%s** for the whole run (%s per event), max error %s against 50 digits." % (
-            fmt_time(ours_time), fmt_time(ours_time / max(1, len(exact))),
-            fmt_err(ours["hp_max_abs_error"])))
-        w("- Fastest peer that got the whole sequence of stops and breakaways right: "
-          "**%s, %s**: %s, max event error %s. Ratio **%s**." % (
+        if equal:
+            eq_fast = min(equal, key=lambda r: r["time"])
+            ratio_equal = eq_fast["time"] / ours_time
+            w("- Fastest peer run at equal or better accuracy: **%s, %s**: %s, max event "
+              "error %s. Ratio **%s**." % (eq_fast["code"], eq_fast["setting"],
+                                           fmt_time(eq_fast["time"]), fmt_err(eq_fast["error"]),
+                                           fmt_ratio(ratio_equal)))
+        else:
+            w("- **No peer run reached equal accuracy.** The closest, the most accurate peer "
+              "run with the right sequence, is **%s, %s**: %s, max event error %s (%s times "
+              "ours). Ratio **%s**." % (best["code"], best["setting"], fmt_time(best["time"]),
+                                       fmt_err(best["error"]),
+                                       fmt_ratio(best["error"] / ours_err) if ours_err else "-",
+                                       fmt_ratio(ratio_best)))
+        w("- Fastest peer run that got the whole sequence right, at any accuracy: **%s, %s**: "
+          "%s, max event error %s. Ratio **%s**." % (
               fastest["code"], fastest["setting"], fmt_time(fastest["time"]),
               fmt_err(fastest["error"]), fmt_ratio(ratio_fast)))
-        w("- Most accurate peer with the right sequence: **%s, %s**: %s, max event error "
-          "%s. Ratio **%s**." % (best["code"], best["setting"], fmt_time(best["time"]),
-                                 fmt_err(best["error"]), fmt_ratio(ratio_best)))
         for family in ("scipy `solve_ivp`", "SUNDIALS CVODE", "Siconos"):
             fam = [r for r in correct if r["code"] == family]
             if fam:
-                f_best = min(fam, key=lambda r: r["error"])
+                f_best = min(fam, key=lambda r: (r["error"], r["time"]))
                 f_fast = min(fam, key=lambda r: r["time"])
                 w("- %s: fastest right-sequence run %s (%s, error %s, ratio %s); most accurate "
                   "%s (%s, error %s, ratio %s)." % (
@@ -425,16 +455,38 @@ def write_report(args, results, commands, elapsed_runs):
                       f_best["setting"], fmt_time(f_best["time"]), fmt_err(f_best["error"]),
                       fmt_ratio(f_best["time"] / ours_time)))
         w("")
-        met = ratio_fast >= 1e4
-        w("**Target: %s.** Against the fastest right-sequence peer the engine is %s times "
-          "faster; the target asks for 10^4%s" % (
-              "met" if met else "NOT met", fmt_ratio(ratio_fast),
-              "." if met else
-              " (a factor %s short). Even against the most accurate peer run it is %s times "
-              "faster. The engine is far more accurate than every peer, but not 10^4 times "
-              "faster than a good ODE solver with root finding on this problem." % (
-                  fmt_ratio(1e4 / ratio_fast), fmt_ratio(ratio_best))))
+        if equal:
+            met = ratio_equal >= 1e4
+            w("**Target: %s.** Against the fastest peer run at equal or better accuracy "
+              "(%s, %s) the engine is %s times faster; the target asks for 10^4%s Against "
+              "the fastest right-sequence run at any accuracy it is %s times faster." % (
+                  "met" if met else "NOT met", eq_fast["code"], eq_fast["setting"],
+                  fmt_ratio(ratio_equal),
+                  "." if met else " (a factor %s short)." % fmt_ratio(1e4 / ratio_equal),
+                  fmt_ratio(ratio_fast)))
+        else:
+            if ratio_best >= 1e4 and ratio_fast >= 1e4:
+                verdict = "met"
+                because = ("the engine is %s times faster than the closest-accuracy peer run "
+                           "and %s times faster than the fastest right-sequence run" % (
+                               fmt_ratio(ratio_best), fmt_ratio(ratio_fast)))
+            elif ratio_best >= 1e4:
+                verdict = "met only against the closest-accuracy peer"
+                because = ("the engine is %s times faster than the closest-accuracy peer run, "
+                           "but only %s times faster than the fastest right-sequence run, "
+                           "which is less accurate" % (fmt_ratio(ratio_best),
+                                                       fmt_ratio(ratio_fast)))
+            else:
+                verdict = "NOT met"
+                because = ("no peer run is at equal accuracy, and even against the "
+                           "closest-accuracy run (the most favourable reading for us) the "
+                           "engine is only %s times faster, a factor %s short of 10^4; against "
+                           "the fastest right-sequence run it is %s times faster" % (
+                               fmt_ratio(ratio_best), fmt_ratio(1e4 / ratio_best),
+                               fmt_ratio(ratio_fast)))
+            w("**Target: %s.** %s." % (verdict, because[0].upper() + because[1:]))
     else:
+        w("")
         w("**No peer got the sequence of stops and breakaways right on this case**, so no "
           "ratio can be stated at comparable accuracy.")
     w("")
@@ -547,15 +599,32 @@ def write_report(args, results, commands, elapsed_runs):
       "as `y' = 0` with the root `|sin t| - lambda` (increasing), and restarts the solver "
       "at each switch with `v = 0` exactly. During a stick the step is capped at 0.5 "
       "(otherwise the zero right-hand side lets the step grow past the whole force "
-      "window and the breakaway is missed). Loose = rtol 1e-6, atol 1e-9; tight = rtol "
-      "1e-12, atol 1e-14 (accepted as given by every method here).")
+      "window and the breakaway is missed); slips run with each solver's default step "
+      "control. Loose = rtol 1e-6, atol 1e-9; tight = rtol 1e-12, atol 1e-14 (accepted "
+      "as given by every method here). Two guards in the scipy driver, counted in its "
+      "evaluations column when they act: scipy's event root can land a rounding short of "
+      "the crossing `|sin t| = lambda`, so the slip after a breakaway starts from the first "
+      "double past it (where CVODE puts its roots; the breakaway time reported is still "
+      "scipy's root); and a slip from rest whose `v = 0` event "
+      "fires at its own start (the first step was below the resolution of `t`) is retried "
+      "once with `first_step = 1e-4`. A run with 10 events in a row at the same `t` stops "
+      "as failed (a Zeno loop).")
+    siconos_fine = os.path.join(results, "siconos-mj-h%s-1000p.json" %
+                                SICONOS_STEPS_1000P.split(",")[-1])
+    estimate = ""
+    if os.path.exists(siconos_fine) and SICONOS_STEPS_1000P != SICONOS_STEPS:
+        r = load(siconos_fine)
+        finest = SICONOS_STEPS.split(",")[-1]
+        per_step = r["time_s"] / max(1, r["steps"])
+        estimate = " (h = %s would take about %s there at %s per step)" % (
+            finest, fmt_time(per_step * r["t_end"] / float(finest)), fmt_time(per_step))
     w("- **Time limits**: a run on the 1000-period case stops after %g s of wall time (a "
       "30-unit case after %g s); such a run is marked *stopped*, its error and sequence "
       "cover the part it did, and its ratio uses the time extrapolated linearly to the "
       "whole horizon. Siconos runs h = %s on the 30-unit cases and h = %s on the "
-      "1000-period case (h = 1e-4 would take about 10 minutes there)." % (
+      "1000-period case%s." % (
           args.deadline_1000p, args.deadline, SICONOS_STEPS.replace(",", ", "),
-          SICONOS_STEPS_1000P.replace(",", ", ")))
+          SICONOS_STEPS_1000P.replace(",", ", "), estimate))
     w("")
     w("## Commands")
     w("")
@@ -571,7 +640,10 @@ def write_report(args, results, commands, elapsed_runs):
     w("")
     w("```sh")
     for c in args.prelude_commands + commands:
-        w(c.replace(args.tmp_prefix, "$TMP") if args.tmp_prefix else c)
+        if args.tmp_prefix:
+            c = c.replace(args.tmp_prefix, "$TMP")
+        c = c.replace(repo.rstrip("/") + "/", "").replace(repo.rstrip("/"), ".")
+        w(c)
     w("```")
     w("")
     with open(args.doc, "w") as f:
@@ -598,6 +670,7 @@ def main():
         with open(args.prelude) as f:
             args.prelude_commands = [l.rstrip("\n") for l in f if l.strip()]
     os.makedirs(args.results, exist_ok=True)
+    args.load_start = read_load()
     commands = []
     start = time.perf_counter()
     log_path = os.path.join(args.results, "commands.json")
@@ -626,10 +699,12 @@ def main():
                     "--deadline", repr(args.deadline),
                     "--deadline-1000p", repr(args.deadline_1000p)], commands)
         elapsed = time.perf_counter() - start
-        peer_common.write_json(log_path, {"commands": commands, "elapsed_s": elapsed})
+        peer_common.write_json(log_path, {"commands": commands, "elapsed_s": elapsed,
+                                          "load_start": args.load_start})
     else:
         log = load(log_path)
         commands, elapsed = log["commands"], log["elapsed_s"]
+        args.load_start = log.get("load_start", "?")
     args.script_seconds = (time.time() - args.script_start) if args.script_start else None
     write_report(args, args.results, commands, elapsed)
 

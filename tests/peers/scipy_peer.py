@@ -9,10 +9,11 @@ with solve_ivp and terminal event functions, switching between stick and slip:
 
 At v = 0: |sin t| <= lambda -> stick (a stop); else slip in the direction of the force
 (a reversal if that is the other way, a "touch" if it is the same way). At the end of a
-stick: slip in the direction of the force (a breakaway), from the first double past the
-crossing |sin t| = lambda (scipy's root may be a rounding short of it, and then the slip
-can stop at once and the stop/breakaway pair repeats for ever at the same t; CVODE puts
-its roots past the crossing by itself). Each phase is a new solve_ivp
+stick: slip in the direction of the force (a breakaway). The slip starts from the first
+double past the crossing |sin t| = lambda: scipy's root may be a rounding short of it,
+and then the slip can stop at once and the stop/breakaway pair repeats for ever at the
+same t (CVODE puts its roots past the crossing by itself). The breakaway time reported is
+scipy's root. Each phase is a new solve_ivp
 call from the event state, with v set to 0 exactly. During a stick the step is capped at
 0.5 (max_step): the right-hand side is zero, so the error control would let the step grow
 past a whole window |sin t| > lambda (1.59 wide at lambda = 0.7) and the event would be
@@ -23,7 +24,7 @@ the resolution of t, so v never left 0) is retried once with first_step = 1e-4. 
 that produces 10 events in a row at the same t stops and reports it (a Zeno loop).
 
 Counted: nfev (right-hand side), njev, nlu (summed over all solve_ivp calls), the
-event-function evaluations, the breakaway roots moved past the crossing ("nudges") and
+event-function evaluations, the slip starts moved past the crossing ("nudges") and
 the retried slips ("retries"), and the largest step taken in a slip. A run stops at its deadline (wall clock) and says how far
 it got.
 
@@ -138,13 +139,15 @@ def run(lam, v0, t_end, method, rtol, atol, deadline):
             finished = True
             break
         te = float(sol.t_events[0][0])
+        te_root = te  # the event time reported: scipy's own root
         ye = sol.y_events[0][0]
         if sign == 0:
             # scipy's root (brentq) may land on either side of |sin t| = lambda. On the
             # near side the slip would start with the force a rounding below friction, and
             # its v = 0 event could fire at once: stop, stick, the same breakaway again, for
-            # ever (seen with LSODA, loose, on the 1000-period case). Take the first double
-            # past the crossing, which is where CVODE puts its roots.
+            # ever (seen with LSODA, loose, on the 1000-period case). Start the slip from
+            # the first double past the crossing, which is where CVODE puts its roots (the
+            # event time reported stays scipy's root).
             while abs(math.sin(te)) - lam <= 0 and counts["nudges"] < 10**6:
                 te = math.nextafter(te, math.inf)
                 counts["nudges"] += 1
@@ -158,7 +161,7 @@ def run(lam, v0, t_end, method, rtol, atol, deadline):
                 kind = "touch"
         else:
             kind, sign = "breakaway", sign_of(force)
-        events.append((kind, te))
+        events.append((kind, te_root))
         stuck = stuck + 1 if te <= t else 0
         t, x, v = te, float(ye[0]), 0.0
         if stuck >= 10:
