@@ -218,7 +218,7 @@ def scipy_evals(r):
 def cvode_evals(r):
     text = "nfe %s; %s root-fn" % (fmt_int(r["nfev"]), fmt_int(r["ngev"]))
     if r["method"] == "BDF":
-        text += "; %s Jacobians" % fmt_int(r["njev"])
+        text += "; %s Jacobian%s" % (fmt_int(r["njev"]), "" if r["njev"] == 1 else "s")
     return text
 
 
@@ -551,10 +551,13 @@ def write_report(args, results, commands, elapsed_runs):
                           "fails in %s with `%s`" % (a["stage"], a["error"])))
     if ed.get("library_messages"):
         w("  - The Python binding drops the message of the C++ exception. The messages that "
-          "`libsiconos_kernel` has for these code paths are: %s. (Built as a C++ program, "
-          "the relay formulations stop with \"LsodarOSI::initializeWorkVectorsForInteraction "
-          "not yet implemented for nonsmooth of type\" and the friction contact with \"... "
-          "not yet implemented for nonsmooth law of type NewtonImpactFrictionNSL\".)" % "; ".join(
+          "`libsiconos_kernel` has for these code paths are: %s. The same three formulations "
+          "built as a C++ program (`tests/peers/siconos_event_driven_probe.cpp`, configure "
+          "the drivers with `-DPEERS_SICONOS_PROBE=ON`; not run by `run.sh`) show the "
+          "message: \"LsodarOSI::initializeWorkVectorsForInteraction not yet implemented "
+          "for nonsmooth of type\" for the two relay formulations and \"... not yet "
+          "implemented for nonsmooth law of type NewtonImpactFrictionNSL\" for the friction "
+          "contact." % "; ".join(
               "\"%s\"" % m for m in ed["library_messages"]))
     w("")
     w("## How the numbers are made")
