@@ -3,10 +3,12 @@
 // Each phase is integrated in closed form (closed_form.hpp). A slip ends at
 // the first zero of v after its start; v is monotone between the closed-form
 // times where B sin(w t) = +-R, so each such piece holds at most one zero and
-// a sign test at its end brackets it exactly. The zero is found with GSL's
-// Brent solver (double) or Boost.Math TOMS 748 (other scalar types) and
+// a sign test at its end brackets it exactly. The zero is found inside that
+// bracket by Halley steps from a prediction (the stop of an earlier slip from
+// the same forcing phase; one evaluation per stop in a steady state), else by
+// GSL's Brent solver (double) or Boost.Math TOMS 748 (other scalar types),
 // polished in the wider work type. Breakaway times are closed form. No time
-// stepping and no tolerance-dependent event detection.
+// stepping and no tolerance-dependent event detection (docs/theory.md 3.5).
 //
 // The engine is a stream: next() produces one phase at a time, so memory does
 // not grow with the horizon.
