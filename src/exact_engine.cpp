@@ -7,6 +7,12 @@ void SolveOptions::validate() const {
   if (max_phases < 1) throw InvalidInput("max_phases", std::to_string(max_phases), "must be >= 1");
 }
 
+double time_resolution(const Model& model, double t) {
+  using Work = work_t<double>;
+  const Work omega(model.omega);
+  return static_cast<double>(detail::time_resolution<double>(omega * Work(t)) / omega);
+}
+
 template class BasicExactEngine<double>;
 template struct BasicSummary<double>;
 template struct BasicSolution<double>;

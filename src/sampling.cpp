@@ -96,9 +96,7 @@ bool UniformSampler::next(State& state) {
 }
 
 double resolvable_t_end(const Model& model, double t) {
-  const double span = 32 * std::numeric_limits<double>::epsilon() *
-                      std::fmax(1.0, std::fabs(model.omega * model.t0)) / model.omega;
-  return std::fmax(t, model.t0 + span);
+  return std::fmax(t, model.t0 + 4 * time_resolution(model, model.t0));
 }
 
 std::vector<State> sample_at(const Model& model, const std::vector<double>& times) {

@@ -163,6 +163,10 @@ template <class Real>
 BasicSolution<Real> solve(const BasicModel<Real>& model, const Real& t_end,
                           const SolveOptions& options = {});
 
+// The engine's time resolution near time t, 8 eps max(1, |w t|) / w: phases
+// shorter than this are not resolved (merged or refused as a horizon).
+double time_resolution(const Model& model, double t);
+
 using ExactEngine = BasicExactEngine<double>;
 using Summary = BasicSummary<double>;
 using Solution = BasicSolution<double>;
