@@ -71,6 +71,11 @@ SweepWindow sweep_window(std::uint64_t periods) {
   return window;
 }
 
+double sweep_unresolved_distance(std::uint64_t periods) {
+  // 4.1104: the dead band per unit of lambda - lambda*, (4 + pi^2)^(3/2) / (4 pi).
+  return 8 * std::numeric_limits<double>::epsilon() * sweep_window(periods).end / 4.1104;
+}
+
 SweepPoint sweep_point(double lambda, const SweepOptions& options) {
   require_lambda("lambda", lambda);
   options.validate();

@@ -49,6 +49,19 @@ struct SweepWindow {
 };
 SweepWindow sweep_window(std::uint64_t periods);
 
+// How far above lambda* the simulated regime can say `continuous` where the
+// threshold says `dead_bands`: 8 eps (2 pi periods + pi/2) / 4.1104, about
+// 2.72e-15 periods (2.7e-13 for 100). There the dead band, 4.1104 (lambda -
+// lambda*) rad long (docs/theory.md 5.6), is shorter than the engine's time
+// resolution 8 eps |w t| at the end of the run (theory.md 4.1), so the stop
+// and the breakaway after it merge into a reversal. Everywhere else the two
+// regimes agree (docs/cli.md, "sweep", and tests/test_sweep.cpp). The
+// transient is not what limits this: from above lambda* the motion is
+// periodic from the first breakaway, and below it the reversal map contracts
+// by |kappa| = (sin tau1 - lambda) / (sin tau1 + lambda), which tends to 0 at
+// lambda*.
+double sweep_unresolved_distance(std::uint64_t periods);
+
 // What one lambda's run shows in its measured (last) period.
 struct SweepPoint {
   double lambda = 0;

@@ -114,13 +114,6 @@ class ProgressLine {
   std::size_t shown_ = 0;  // length of the line on screen, 0 if none
 };
 
-// Where the dead band 4.1104 (lambda - lambda*) (theory.md 5.6) is shorter
-// than the engine's time resolution 8 eps |w t| at the end of the run: just
-// above lambda* the simulation shows reversals there.
-double unresolved_window(std::uint64_t periods) {
-  return 8 * std::numeric_limits<double>::epsilon() * sweep_window(periods).end / 4.1104;
-}
-
 void write_table(std::FILE* out, const std::vector<SweepPoint>& points, const SweepOptions& options,
                  const SweepCliOptions& typed, const std::string& command) {
   const SweepWindow window = sweep_window(options.periods);
@@ -138,7 +131,7 @@ void write_table(std::FILE* out, const std::vector<SweepPoint>& points, const Sw
   fmt::print(out,
              "# regimes: simulated and threshold differ at {} of {} lambdas (expected only for 0 < "
              "lambda - lambda* < {:.3g}, dead bands shorter than the engine's time resolution)\n",
-             differ, points.size(), unresolved_window(options.periods));
+             differ, points.size(), sweep_unresolved_distance(options.periods));
   std::fputs(
       "lambda,regime_simulated,regime_threshold,stuck_fraction,slide_per_period,"
       "stops_per_period,reversals_per_period\n",
