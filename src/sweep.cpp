@@ -149,8 +149,7 @@ std::vector<double> sweep_grid(double from, double to, std::size_t points) {
   lambdas[0] = from;
   if (points >= 2) {
     const double step = (to - from) / static_cast<double>(points - 1);
-    for (std::size_t i = 1; i + 1 < points; ++i)
-      lambdas[i] = from + static_cast<double>(i) * step;
+    for (std::size_t i = 1; i + 1 < points; ++i) lambdas[i] = from + static_cast<double>(i) * step;
     lambdas[points - 1] = to;
     for (std::size_t i = 1; i < points; ++i) {
       if (!(lambdas[i] > lambdas[i - 1]))
@@ -173,7 +172,10 @@ std::vector<SweepPoint> sweep(const std::vector<double>& lambdas, const SweepOpt
   }
   // The engine's own checks (motion within the range of double) grow with
   // R: the largest lambda is the hardest case. Raised here, before any thread.
-  if (!lambdas.empty()) ExactEngine probe(sweep_model(largest, options.v0), sweep_window(options.periods).end);
+  if (!lambdas.empty()) {
+    const ExactEngine probe(sweep_model(largest, options.v0), sweep_window(options.periods).end);
+    (void)probe;
+  }
 
   const std::size_t total = lambdas.size();
   std::vector<SweepPoint> points(total);

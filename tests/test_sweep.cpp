@@ -323,7 +323,9 @@ TEST(SweepOptions, Validate) {
   options.v0 = std::numeric_limits<double>::infinity();
   EXPECT_EQ(expect_invalid([&] { options.validate(); }).parameter(), "v0");
   EXPECT_EQ(expect_invalid([] { sweep_point(-1, SweepOptions{}); }).parameter(), "lambda");
-  EXPECT_EQ(expect_invalid([] { sweep({0.3, std::nan("")}, SweepOptions{}); }).parameter(),
+  EXPECT_EQ(expect_invalid([] {
+              sweep({0.3, std::nan("")}, SweepOptions{});
+            }).parameter(),
             "lambda");
   // The engine's own refusal (motion beyond the range of double) comes
   // before any thread starts.
@@ -388,9 +390,9 @@ TEST(Sweep, AnExceptionFromTheProgressCallbackStopsTheWorkers) {
   const std::vector<double> lambdas = sweep_grid(0.6, 0.9, 2000);
   SweepOptions options;
   options.periods = 100;
-  EXPECT_THROW(sweep(lambdas, options,
-                     [](std::size_t, std::size_t) { throw std::runtime_error("stop"); }),
-               std::runtime_error);
+  EXPECT_THROW(
+      sweep(lambdas, options, [](std::size_t, std::size_t) { throw std::runtime_error("stop"); }),
+      std::runtime_error);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // from the threshold lambda*, with the stuck fraction, slide and stops per
 // period, for a grid of lambdas (library: frictionref/sweep.hpp). All cores
 // by default; a progress line on a terminal for long runs.
+#include "frictionref/sweep.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -20,18 +22,17 @@
 #include "csv_format.hpp"
 #include "figure.hpp"
 #include "frictionref/steady_state.hpp"
-#include "frictionref/sweep.hpp"
 #include "frictionref/version.hpp"
 #include "model_options.hpp"
 
 namespace frictionref::cli {
 namespace {
 
-constexpr double max_lambda = 1e6;      // every lambda >= 1 stops; larger adds nothing
-constexpr double max_speed = 1e6;       // |v0| [B/(m w)]
-constexpr double max_points = 1e7;      // about 40 bytes of results per point
+constexpr double max_lambda = 1e6;  // every lambda >= 1 stops; larger adds nothing
+constexpr double max_speed = 1e6;   // |v0| [B/(m w)]
+constexpr double max_points = 1e7;  // about 40 bytes of results per point
 constexpr double max_threads = 256;
-constexpr double max_total_periods = 1e9;  // points * periods: a typo must not run for days
+constexpr double max_total_periods = 1e9;    // points * periods: a typo must not run for days
 constexpr std::size_t max_plotted = 20'000;  // evenly spaced rows, plus every change
 
 struct SweepCliOptions {
@@ -47,11 +48,13 @@ struct SweepCliOptions {
 
 double finite_lambda(const TypedNumber& typed) {
   const double value = parse_number(typed);
-  if (!std::isfinite(value)) throw bad_input(fmt::format("{} = {}: must be a finite number", typed.option, typed.text));
-  if (!(value >= 0)) throw bad_input(fmt::format("{} = {}: must be >= 0", typed.option, typed.text));
+  if (!std::isfinite(value))
+    throw bad_input(fmt::format("{} = {}: must be a finite number", typed.option, typed.text));
+  if (!(value >= 0))
+    throw bad_input(fmt::format("{} = {}: must be >= 0", typed.option, typed.text));
   if (!(value <= max_lambda))
-    throw bad_input(fmt::format("{} = {}: must be <= 1e6 (every lambda >= 1 stops)", typed.option,
-                                typed.text));
+    throw bad_input(
+        fmt::format("{} = {}: must be <= 1e6 (every lambda >= 1 stops)", typed.option, typed.text));
   return value;
 }
 
@@ -65,7 +68,7 @@ std::uint64_t whole_number(const TypedNumber& typed, double max, const char* max
   return static_cast<std::uint64_t>(value);
 }
 
-// "sweep: 41234/100000 lambdas (41%), 4 s, about 6 s left", rewritten in
+// "frictionref sweep: 41234/100000 lambdas (41%), 4 s so far, about 6 s left", rewritten in
 // place on a terminal, and only once the run has taken longer than the delay
 // (1 s; FRICTIONREF_PROGRESS_DELAY seconds if set, for tests). Never written
 // to a file or pipe. The line is blanked out when the sweep ends, or when an
@@ -87,8 +90,8 @@ class ProgressLine {
     if (!enabled_ || done >= total) return;
     const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
     if (elapsed < delay_) return;
-    std::string line = fmt::format("sweep: {}/{} lambdas ({}%), {:.0f} s", done, total,
-                                   done * 100 / total, elapsed);
+    std::string line = fmt::format("frictionref sweep: {}/{} lambdas ({}%), {:.0f} s so far", done,
+                                   total, done * 100 / total, elapsed);
     if (done > 0)
       line += fmt::format(", about {:.0f} s left",
                           elapsed * static_cast<double>(total - done) / static_cast<double>(done));
@@ -120,7 +123,8 @@ void write_table(std::FILE* out, const std::vector<SweepPoint>& points, const Sw
   std::size_t differ = 0;
   for (const SweepPoint& p : points) differ += !p.regimes_agree();
   fmt::print(out, "# frictionref {}\n", version);
-  fmt::print(out, "# model: mass=1 amplitude=1 omega=1 friction=lambda lambda=lambda x0=0 v0={} t0=0\n",
+  fmt::print(out,
+             "# model: mass=1 amplitude=1 omega=1 friction=lambda lambda=lambda x0=0 v0={} t0=0\n",
              options.v0);
   fmt::print(out, "# command: {}\n", command);
   fmt::print(out,
@@ -192,12 +196,14 @@ Figure sweep_figure(const std::vector<SweepPoint>& points, const SweepOptions& o
       "lambda = R / B [1]", "stops, reversals per period [1]", {stops_exact, stops, reversals});
   const double threshold = regime_threshold();
   const bool marked = !points.empty() && points.front().lambda <= threshold &&
-                      threshold <= points.back().lambda && points.front().lambda < points.back().lambda;
+                      threshold <= points.back().lambda &&
+                      points.front().lambda < points.back().lambda;
   if (marked) stuck_panel.vertical_lines = stops_panel.vertical_lines = {threshold};
   Figure figure;
-  figure.title = fmt::format("sweep: m=B=w=1, v0={}, measured over the last of {} periods; "
-                             "lambda* = {}{}",
-                             options.v0, options.periods, threshold, marked ? " (dashed)" : "");
+  figure.title = fmt::format(
+      "sweep: m=B=w=1, v0={}, measured over the last of {} periods; "
+      "lambda* = {}{}",
+      options.v0, options.periods, threshold, marked ? " (dashed)" : "");
   figure.panels = {stuck_panel, stops_panel};
   return figure;
 }
@@ -213,16 +219,17 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
     throw bad_input(fmt::format("--points = {}: a single lambda needs --lambda-to = --lambda-from",
                                 typed.points));
   if (points > 1 && to == from)
-    throw bad_input(fmt::format("--points = {}: must be 1 when --lambda-from = --lambda-to",
-                                typed.points));
+    throw bad_input(
+        fmt::format("--points = {}: must be 1 when --lambda-from = --lambda-to", typed.points));
   SweepOptions options;
   options.periods = whole_number({"--periods", typed.periods},
                                  static_cast<double>(SweepOptions::max_periods), "10^6");
   const double total = static_cast<double>(points) * static_cast<double>(options.periods);
   if (total > max_total_periods)
-    throw bad_input(fmt::format("--periods = {}: with --points = {} the sweep would simulate {:.3g} "
-                                "forcing periods, more than 10^9",
-                                typed.periods, typed.points, total));
+    throw bad_input(
+        fmt::format("--periods = {}: with --points = {} the sweep would simulate {:.3g} "
+                    "forcing periods, more than 10^9",
+                    typed.periods, typed.points, total));
   if (!typed.threads.empty())
     options.threads =
         static_cast<unsigned>(whole_number({"--threads", typed.threads}, max_threads, "256"));
@@ -266,8 +273,9 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
 Command add_sweep_command(CLI::App& app) {
   auto options = std::make_shared<SweepCliOptions>();
   CLI::App* command = app.add_subcommand(
-      "sweep", "Simulated regime against the threshold's, stuck fraction and stops per period, "
-               "for a grid of lambdas");
+      "sweep",
+      "Simulated regime against the threshold's, stuck fraction and stops per period, "
+      "for a grid of lambdas");
   numeric(command->add_option("--lambda-from", options->lambda_from,
                               "first lambda = R / B [1]; finite, >= 0"))
       ->required()
@@ -276,11 +284,13 @@ Command add_sweep_command(CLI::App& app) {
                               "last lambda [1]; >= --lambda-from, <= 1e6"))
       ->required()
       ->type_name("B");
-  numeric(command->add_option("--points", options->points,
-                              "number of lambdas, evenly spaced from A to B; 1 to 10^7 (1 needs A = B)"))
+  numeric(command->add_option(
+              "--points", options->points,
+              "number of lambdas, evenly spaced from A to B; 1 to 10^7 (1 needs A = B)"))
       ->required()
       ->type_name("N");
-  numeric(command->add_option("--v0", options->v0, "initial velocity of every run [B/(m w)]; |v0| <= 1e6"))
+  numeric(command->add_option("--v0", options->v0,
+                              "initial velocity of every run [B/(m w)]; |v0| <= 1e6"))
       ->type_name("V")
       ->capture_default_str();
   numeric(command->add_option("--periods", options->periods,
@@ -292,9 +302,10 @@ Command add_sweep_command(CLI::App& app) {
                               "worker threads; 1 to 256 (default: all cores)"))
       ->type_name("N");
   options->output.add_to(*command);
-  command->add_option("--plot", options->plot,
-                      "also draw stuck fraction and stops per period against lambda, lambda* "
-                      "dashed, into FILE (.svg or .png; needs gnuplot)")
+  command
+      ->add_option("--plot", options->plot,
+                   "also draw stuck fraction and stops per period against lambda, lambda* "
+                   "dashed, into FILE (.svg or .png; needs gnuplot)")
       ->type_name("FILE");
   command->footer(
       "For each lambda, runs the exact engine with m = B = w = 1, R = lambda, x0 = t0 = 0 and\n"
@@ -310,7 +321,8 @@ Command add_sweep_command(CLI::App& app) {
       "A progress line is shown on a terminal (stderr) when the run takes over a second.\n"
       "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
       "Examples:\n"
-      "  frictionref sweep --lambda-from 0 --lambda-to 1.2 --points 1201 -o sweep.csv --plot sweep.svg\n"
+      "  frictionref sweep --lambda-from 0 --lambda-to 1.2 --points 1201 -o sweep.csv --plot "
+      "sweep.svg\n"
       "  frictionref sweep --lambda-from 0.5 --lambda-to 0.6 --points 101 --periods 1000 --v0 1");
   return {command, [options](const Invocation& invocation) {
             run_sweep(*options, invocation);
