@@ -134,7 +134,9 @@ SweepPoint sweep_point(double lambda, const SweepOptions& options) {
   return point;
 }
 
-std::vector<double> sweep_grid(double from, double to, std::size_t points) {
+std::vector<double> sweep_grid(long double from_exact, long double to_exact, std::size_t points) {
+  const double from = static_cast<double>(from_exact);
+  const double to = static_cast<double>(to_exact);
   require_lambda("lambda_from", from);
   require_lambda("lambda_to", to);
   if (!(to >= from))
@@ -148,8 +150,13 @@ std::vector<double> sweep_grid(double from, double to, std::size_t points) {
   std::vector<double> lambdas(points);
   lambdas[0] = from;
   if (points >= 2) {
-    const double step = (to - from) / static_cast<double>(points - 1);
-    for (std::size_t i = 1; i + 1 < points; ++i) lambdas[i] = from + static_cast<double>(i) * step;
+    // In long double, rounded once: with decimal ends read by strtold, the
+    // grid lands on the doubles nearest its decimal values (0.8, not the
+    // 0.7999999999999999 of 4 * (1.2 / 6) in double).
+    const long double span = to_exact - from_exact;
+    const long double intervals = static_cast<long double>(points - 1);
+    for (std::size_t i = 1; i + 1 < points; ++i)
+      lambdas[i] = static_cast<double>(from_exact + span * static_cast<long double>(i) / intervals);
     lambdas[points - 1] = to;
     for (std::size_t i = 1; i < points; ++i) {
       if (!(lambdas[i] > lambdas[i - 1]))

@@ -293,8 +293,15 @@ TEST(SweepGrid, EvenlySpacedWithExactEnds) {
   ASSERT_EQ(grid.size(), 13u);
   EXPECT_EQ(grid.front(), 0);
   EXPECT_EQ(grid.back(), 1.2);
-  EXPECT_EQ(grid[6], 0.6);
   for (std::size_t i = 1; i < grid.size(); ++i) EXPECT_NEAR(grid[i] - grid[i - 1], 0.1, 1e-15);
+  // Decimal ends in long double: every point is the double nearest i / 10.
+  const std::vector<double> decimal = sweep_grid(0, 1.2L, 13);
+  for (std::size_t i = 0; i < decimal.size(); ++i)
+    EXPECT_EQ(decimal[i], static_cast<double>(i) / 10) << i;
+  // With the double 1.2 (just below 1.2) the fifth of seven is below 0.8.
+  EXPECT_EQ(sweep_grid(0, 1.2, 7)[4], 0.7999999999999999);
+  EXPECT_EQ(sweep_grid(0, 1.2L, 7)[4], 0.8);
+  EXPECT_EQ(sweep_grid(0, 1.2L, 7)[5], 1.0);
   EXPECT_EQ(sweep_grid(0.7, 0.7, 1), std::vector<double>{0.7});
   EXPECT_EQ(sweep_grid(0.5, 0.6, 2), (std::vector<double>{0.5, 0.6}));
 }

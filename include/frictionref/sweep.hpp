@@ -97,12 +97,17 @@ struct SweepPoint {
 // refuses the model (its motion would leave the range of double).
 SweepPoint sweep_point(double lambda, const SweepOptions& options);
 
-// `points` lambdas from `from` to `to`: from + i (to - from) / (points - 1),
-// the last exactly `to`. points = 1 needs from == to. Throws InvalidInput
-// ("lambda_from", "lambda_to", "points") for non-finite or negative ends,
-// to < from, points = 0, points = 1 with from != to, points >= 2 with
-// from == to, or a step so small that two lambdas would be equal.
-std::vector<double> sweep_grid(double from, double to, std::size_t points);
+// `points` lambdas from `from` to `to`: the ends rounded to double, and in
+// between from + (to - from) i / (points - 1) evaluated in long double and
+// rounded once to double (not accumulated, and not the double step of
+// numpy.linspace). Give decimal ends as long double (strtold, or 1.2L) to get
+// the doubles nearest the decimal grid: sweep_grid(0, 1.2L, 7) holds 0.8 and
+// 1 where a double step gives 0.7999999999999999 and 0.9999999999999999.
+// points = 1 needs from == to. Throws InvalidInput ("lambda_from",
+// "lambda_to", "points") for non-finite or negative ends, to < from,
+// points = 0, points = 1 with from != to, points >= 2 with from == to, or a
+// step so small that two lambdas would be equal.
+std::vector<double> sweep_grid(long double from, long double to, std::size_t points);
 
 // Called on the thread that called sweep(), about ten times a second and
 // once at the end (done == total): lambdas finished so far, and all.

@@ -58,6 +58,15 @@ double finite_lambda(const TypedNumber& typed) {
   return value;
 }
 
+// The typed decimal in long double (strtold), for the grid's interior
+// points; the double `value` (strtod) itself in the rare case where the long
+// double would round to another double than strtod's correctly rounded one,
+// so the grid's ends are always exactly the numbers as read.
+long double precise(const std::string& text, double value) {
+  const long double wide = std::strtold(text.c_str(), nullptr);
+  return static_cast<double>(wide) == value ? wide : static_cast<long double>(value);
+}
+
 // A whole number in [1, max]; "1e5" is fine.
 std::uint64_t whole_number(const TypedNumber& typed, double max, const char* max_text) {
   const double value = parse_number(typed);
@@ -246,8 +255,9 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
                            {"points", {"--points", typed.points}},
                            {"periods", {"--periods", typed.periods}},
                            {"v0", {"--v0", typed.v0}}};
-  const std::vector<double> lambdas =
-      naming_options(inputs, [&] { return sweep_grid(from, to, points); });
+  const std::vector<double> lambdas = naming_options(inputs, [&] {
+    return sweep_grid(precise(typed.lambda_from, from), precise(typed.lambda_to, to), points);
+  });
 
   AtomicOutput out(typed.output.path(), "-o");  // a bad -o fails now, not after the run
   std::vector<SweepPoint> results;

@@ -97,7 +97,7 @@ TEST(Sweep, ColumnsMetadataAndRegimes) {
     const std::vector<std::string>& row = csv.rows[i];
     SCOPED_TRACE(row[lambda]);
     const double l = to_double(row[lambda]);
-    EXPECT_EQ(l, i == 12 ? 1.2 : static_cast<double>(i) * (1.2 / 12));  // from + i step, exact end
+    EXPECT_EQ(l, static_cast<double>(i) / 10);  // the doubles nearest the decimal grid
     const std::string expected = l < kLambdaStar ? "continuous" : l < 1 ? "dead-bands" : "stops";
     EXPECT_EQ(row[threshold], expected);
     EXPECT_EQ(row[simulated], expected);
