@@ -127,7 +127,7 @@ class ProgressLine {
 };
 
 void write_table(std::FILE* out, const std::vector<SweepPoint>& points, const SweepOptions& options,
-                 const SweepCliOptions& typed, const std::string& command) {
+                 const std::string& command) {
   const SweepWindow window = sweep_window(options.periods);
   std::size_t differ = 0;
   for (const SweepPoint& p : points) differ += !p.regimes_agree();
@@ -139,11 +139,11 @@ void write_table(std::FILE* out, const std::vector<SweepPoint>& points, const Sw
   fmt::print(out,
              "# sweep: lambda_from={} lambda_to={} points={} periods={} measured_from={} "
              "measured_to={} threshold={}\n",
-             typed.lambda_from, typed.lambda_to, points.size(), options.periods, window.begin,
-             window.end, regime_threshold());
+             points.front().lambda, points.back().lambda, points.size(), options.periods,
+             window.begin, window.end, regime_threshold());
   fmt::print(out,
              "# regimes: simulated and threshold differ at {} of {} lambdas (expected only for 0 < "
-             "lambda - lambda* < {:.3g}, dead bands shorter than the engine's time resolution)\n",
+             "lambda - lambda* <= {:.3g}, dead bands shorter than the engine's time resolution)\n",
              differ, points.size(), sweep_unresolved_distance(options.periods));
   std::fputs(
       "lambda,regime_simulated,regime_threshold,stuck_fraction,slide_per_period,"
@@ -273,7 +273,7 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
       throw internal_error(fmt::format("the engine stopped early ({}) at lambda = {}",
                                        to_string(p.termination), p.lambda));
   }
-  write_table(out.stream(), results, options, typed, invocation.command_line);
+  write_table(out.stream(), results, options, invocation.command_line);
   if (!typed.plot.empty()) write_figure(sweep_figure(results, options), typed.plot, "--plot");
   out.commit();
 }
