@@ -10,6 +10,7 @@
 #include "frictionref/sampling.hpp"
 #include "frictionref/steady_state.hpp"
 #include "frictionref/stiff_spring.hpp"
+#include "frictionref/sweep.hpp"
 #include "frictionref/time_history.hpp"
 #include "frictionref/types.hpp"
 #include "frictionref/version.hpp"

@@ -18,10 +18,14 @@
 #include "frictionref/version.hpp"
 
 namespace frictionref::cli {
+
+// src/cli/sweep.cpp (declared here, next to its one caller).
+Command add_sweep_command(CLI::App& app);
+
 namespace {
 
 constexpr const char* usage =
-    "usage: frictionref {events|curve|classify|reproduce|stiff|compare|convergence} [options] "
+    "usage: frictionref {events|curve|classify|reproduce|stiff|compare|convergence|sweep} [options] "
     "(see frictionref --help)";
 
 // Scripts read stderr line by line: whatever the message, it is one line.
@@ -74,12 +78,13 @@ int run(int argc, char** argv) {
       "  frictionref stiff --lambda 0.7 --t-end 30 --kf 1e7 -o stiff.csv\n"
       "  frictionref compare --lambda 0.7 --candidate stiff.csv --plot compare.svg\n"
       "  frictionref convergence --lambda 0.7 --format markdown\n"
+      "  frictionref sweep --lambda-from 0 --lambda-to 1.2 --points 1201 --plot sweep.svg\n"
       "'frictionref <command> --help' explains each command; docs/cli.md has the formats.");
 
   const std::vector<Command> commands{
       add_events_command(app),  add_curve_command(app),   add_reproduce_command(app),
       add_classify_command(app), add_stiff_command(app),  add_compare_command(app),
-      add_convergence_command(app)};
+      add_convergence_command(app), add_sweep_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& help_or_version) {

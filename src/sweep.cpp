@@ -1,0 +1,248 @@
+// The lambda sweep (sweep.hpp): one streamed engine run per lambda, measured
+// over its last period, and a pool of std::threads taking chunks of lambdas
+// from an atomic counter.
+#include "frictionref/sweep.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <boost/math/constants/constants.hpp>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "frictionref/error.hpp"
+#include "frictionref/exact_engine.hpp"
+#include "frictionref/model.hpp"
+#include "frictionref/phase.hpp"
+#include "frictionref/steady_state.hpp"
+
+namespace frictionref {
+namespace {
+
+// Shortest round-trip text, as the model's own messages.
+std::string text(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
+void require_lambda(const char* name, double lambda) {
+  if (!std::isfinite(lambda)) throw InvalidInput(name, text(lambda), "must be a finite number");
+  if (!(lambda >= 0)) throw InvalidInput(name, text(lambda), "must be >= 0");
+}
+
+Model sweep_model(double lambda, double v0) {
+  Model model;  // m = B = w = 1, x0 = t0 = 0
+  model.friction = lambda;
+  model.v0 = v0;
+  return model;
+}
+
+unsigned worker_count(const SweepOptions& options, std::size_t points) {
+  unsigned threads = options.threads;
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  return static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(points, 1)));
+}
+
+}  // namespace
+
+void SweepOptions::validate() const {
+  if (!std::isfinite(v0)) throw InvalidInput("v0", text(v0), "must be a finite number");
+  if (periods < 1) throw InvalidInput("periods", std::to_string(periods), "must be >= 1");
+  if (periods > max_periods)
+    throw InvalidInput("periods", std::to_string(periods), "must be <= 10^6");
+}
+
+SweepWindow sweep_window(std::uint64_t periods) {
+  if (periods < 1) throw InvalidInput("periods", "0", "must be >= 1");
+  // In long double, rounded once to double: each end is within about half an
+  // ulp of 2 pi k + pi/2.
+  const long double two_pi_l = boost::math::constants::two_pi<long double>();
+  const long double half_pi_l = boost::math::constants::half_pi<long double>();
+  SweepWindow window;
+  window.begin = static_cast<double>(two_pi_l * static_cast<long double>(periods - 1) + half_pi_l);
+  window.end = static_cast<double>(two_pi_l * static_cast<long double>(periods) + half_pi_l);
+  return window;
+}
+
+double sweep_unresolved_distance(std::uint64_t periods) {
+  // 4.1104: the dead band per unit of lambda - lambda*, (4 + pi^2)^(3/2) / (4 pi).
+  return 8 * std::numeric_limits<double>::epsilon() * sweep_window(periods).end / 4.1104;
+}
+
+SweepPoint sweep_point(double lambda, const SweepOptions& options) {
+  require_lambda("lambda", lambda);
+  options.validate();
+  const Model model = sweep_model(lambda, options.v0);
+  const SweepWindow window = sweep_window(options.periods);
+  ExactEngine engine(model, window.end);
+
+  SweepPoint point;
+  point.lambda = lambda;
+  point.regime_threshold = regime_for(lambda);
+
+  double rest = 0;   // time at rest inside the window
+  double slide = 0;  // distance slid inside the window
+  std::uint32_t breakaways = 0;
+  bool have_previous = false;
+  PhaseKind previous = PhaseKind::stick;
+  PhaseKind last = PhaseKind::stick;
+  Phase phase;
+  while (engine.next(phase)) {
+    last = phase.kind;
+    if (phase.t_end > window.begin) {
+      const bool starts_inside = phase.t_begin >= window.begin;
+      if (phase.kind == PhaseKind::stick) {
+        rest += phase.t_end - (starts_inside ? phase.t_begin : window.begin);
+      } else {
+        const double x_begin =
+            starts_inside ? phase.x_begin : evaluate(model, phase, window.begin).x;
+        slide += std::fabs(phase.x_end - x_begin);
+      }
+      // The boundary at phase.t_begin is an event of the window.
+      if (starts_inside && have_previous) {
+        if (previous == PhaseKind::stick) {
+          ++breakaways;
+        } else if (phase.kind == PhaseKind::stick) {
+          ++point.stops_per_period;
+        } else if (phase.kind != previous) {
+          ++point.reversals_per_period;
+        }
+      }
+    }
+    previous = phase.kind;
+    have_previous = true;
+  }
+  point.termination = engine.summary().termination;
+
+  const double length = window.end - window.begin;
+  point.stuck_fraction = std::min(1.0, rest / length);
+  point.slide_per_period = slide;
+  if (last == PhaseKind::stick && breakaways == 0) {
+    point.regime_simulated = Regime::stops;
+  } else if (rest > 0) {
+    point.regime_simulated = Regime::dead_bands;
+  } else {
+    point.regime_simulated = Regime::continuous;
+  }
+  return point;
+}
+
+std::vector<double> sweep_grid(long double from_exact, long double to_exact, std::size_t points) {
+  const double from = static_cast<double>(from_exact);
+  const double to = static_cast<double>(to_exact);
+  require_lambda("lambda_from", from);
+  require_lambda("lambda_to", to);
+  if (!(to >= from))
+    throw InvalidInput("lambda_to", text(to), "must be >= lambda_from = " + text(from));
+  if (points == 0) throw InvalidInput("points", "0", "must be >= 1");
+  if (points == 1 && to != from)
+    throw InvalidInput("points", "1", "a single lambda needs lambda_to = lambda_from");
+  if (points >= 2 && to == from)
+    throw InvalidInput("points", std::to_string(points),
+                       "must be 1 when lambda_from = lambda_to (one lambda)");
+  std::vector<double> lambdas(points);
+  lambdas[0] = from;
+  if (points >= 2) {
+    // In long double, rounded once: with decimal ends read by strtold, the
+    // grid lands on the doubles nearest its decimal values (0.8, not the
+    // 0.7999999999999999 of 4 * (1.2 / 6) in double).
+    const long double span = to_exact - from_exact;
+    const long double intervals = static_cast<long double>(points - 1);
+    for (std::size_t i = 1; i + 1 < points; ++i)
+      lambdas[i] = static_cast<double>(from_exact + span * static_cast<long double>(i) / intervals);
+    lambdas[points - 1] = to;
+    for (std::size_t i = 1; i < points; ++i) {
+      if (!(lambdas[i] > lambdas[i - 1]))
+        throw InvalidInput("points", std::to_string(points),
+                           "the grid from " + text(from) + " to " + text(to) +
+                               " would repeat lambda values (its step is below the spacing of "
+                               "doubles)");
+    }
+  }
+  return lambdas;
+}
+
+std::vector<SweepPoint> sweep(const std::vector<double>& lambdas, const SweepOptions& options,
+                              const SweepProgress& progress) {
+  options.validate();
+  double largest = 0;
+  for (double lambda : lambdas) {
+    require_lambda("lambda", lambda);
+    largest = std::max(largest, lambda);
+  }
+  // The engine's own checks (motion within the range of double) grow with
+  // R: the largest lambda is the hardest case. Raised here, before any thread.
+  if (!lambdas.empty()) {
+    const ExactEngine probe(sweep_model(largest, options.v0), sweep_window(options.periods).end);
+    (void)probe;
+  }
+
+  const std::size_t total = lambdas.size();
+  std::vector<SweepPoint> points(total);
+  const unsigned threads = worker_count(options, total);
+  // Chunks small enough to balance the load at the end, large enough that
+  // the counter is touched rarely (a point costs about 20 us per period).
+  const std::size_t chunk =
+      std::clamp<std::size_t>(total / (static_cast<std::size_t>(threads) * 64), 1, 64);
+
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> done{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::mutex mutex;
+  std::condition_variable finished;
+  unsigned running = threads;
+
+  const auto work = [&] {
+    try {
+      while (!failed.load(std::memory_order_relaxed)) {
+        const std::size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
+        if (begin >= total) break;
+        const std::size_t end = std::min(total, begin + chunk);
+        for (std::size_t i = begin; i < end; ++i) points[i] = sweep_point(lambdas[i], options);
+        done.fetch_add(end - begin, std::memory_order_relaxed);
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+      failed = true;
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    --running;
+    finished.notify_all();
+  };
+
+  std::vector<std::thread> pool;
+  pool.reserve(threads);
+  try {
+    for (unsigned i = 0; i < threads; ++i) pool.emplace_back(work);
+    std::unique_lock<std::mutex> lock(mutex);
+    while (running > 0) {
+      finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return running == 0; });
+      if (running > 0 && progress && !failed) {
+        lock.unlock();
+        progress(done.load(std::memory_order_relaxed), total);
+        lock.lock();
+      }
+    }
+  } catch (...) {
+    // A thread that could not start, or a progress callback that threw: stop
+    // the workers after their current point and pass the error on.
+    failed = true;
+    for (std::thread& thread : pool) thread.join();
+    throw;
+  }
+  for (std::thread& thread : pool) thread.join();
+  if (error) std::rethrow_exception(error);
+  if (progress) progress(total, total);
+  return points;
+}
+
+}  // namespace frictionref
