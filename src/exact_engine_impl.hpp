@@ -123,8 +123,9 @@ BasicExactEngine<Real>::BasicExactEngine(const BasicModel<Real>& model, const Re
   }
   using std::fabs;
   const Work max_phase(detail::kMaxForcingPhase);
-  const std::string phase_rule = "must satisfy |w t| <= 1e10 rad (a double cannot resolve the "
-                                 "forcing phase beyond that)";
+  // (A literal, not a std::string: engines are built by the million in sweeps.)
+  constexpr const char* phase_rule = "must satisfy |w t| <= 1e10 rad (a double cannot resolve "
+                                     "the forcing phase beyond that)";
   if (fabs(tau_) > max_phase) throw InvalidInput("t0", detail::to_text(model.t0), phase_rule);
   if (fabs(tau_end_) > max_phase) throw InvalidInput("t_end", detail::to_text(t_end), phase_rule);
   // Nothing shorter than the time resolution is resolved (phases that short

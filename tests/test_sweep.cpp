@@ -377,7 +377,7 @@ TEST(Sweep, SameResultsInLambdaOrderForAnyNumberOfThreads) {
 TEST(Sweep, ProgressIsReportedOnTheCallingThreadAndEndsComplete) {
   const std::vector<double> lambdas = sweep_grid(0.6, 0.9, 400);
   SweepOptions options;
-  options.periods = 50;  // long enough (> 0.1 s) for progress calls during the run
+  options.periods = 500;  // long enough (> 0.1 s) for progress calls during the run
   const std::thread::id caller = std::this_thread::get_id();
   std::vector<std::size_t> seen;
   bool elsewhere = false;
@@ -396,7 +396,7 @@ TEST(Sweep, ProgressIsReportedOnTheCallingThreadAndEndsComplete) {
 TEST(Sweep, AnExceptionFromTheProgressCallbackStopsTheWorkers) {
   const std::vector<double> lambdas = sweep_grid(0.6, 0.9, 2000);
   SweepOptions options;
-  options.periods = 100;
+  options.periods = 1000;  // ~0.8 s of work: the first progress call (0.1 s) comes mid-run
   EXPECT_THROW(
       sweep(lambdas, options, [](std::size_t, std::size_t) { throw std::runtime_error("stop"); }),
       std::runtime_error);

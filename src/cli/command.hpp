@@ -48,5 +48,6 @@ Command add_classify_command(CLI::App& app);
 Command add_stiff_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 Command add_convergence_command(CLI::App& app);
+Command add_sweep_command(CLI::App& app);
 
 }  // namespace frictionref::cli

@@ -19,9 +19,6 @@
 
 namespace frictionref::cli {
 
-// src/cli/sweep.cpp (declared here, next to its one caller).
-Command add_sweep_command(CLI::App& app);
-
 namespace {
 
 constexpr const char* usage =
