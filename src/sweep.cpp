@@ -188,7 +188,7 @@ std::vector<SweepPoint> sweep(const std::vector<double>& lambdas, const SweepOpt
   std::vector<SweepPoint> points(total);
   const unsigned threads = worker_count(options, total);
   // Chunks small enough to balance the load at the end, large enough that
-  // the counter is touched rarely (a point costs about 20 us per period).
+  // the counter is touched rarely (a point costs about 1 us per period).
   const std::size_t chunk =
       std::clamp<std::size_t>(total / (static_cast<std::size_t>(threads) * 64), 1, 64);
 

@@ -2,7 +2,7 @@
 # Regenerates docs/benchmarks.md: the Google Benchmark table (every ratio
 # against a std::cos call measured in the same process), peak memory of the
 # streaming commands, and the timing of the 10^5-lambda sweep.
-#   bash tests/bench/run.sh            (from the repository root; ~3 minutes)
+#   bash tests/bench/run.sh            (from the repository root; ~2 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 

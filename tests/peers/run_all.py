@@ -229,7 +229,7 @@ def build_rows(results, case_id):
     rows = []
     rows.append({
         "code": "**frictionref** exact engine",
-        "setting": "double, closed form + Brent (streaming `next()`)",
+        "setting": "double, closed form, predicted Halley or Brent roots (streaming `next()`)",
         "time": ours["time_s"],
         "evals": "%s closed-form v evals" % fmt_int(ours["velocity_evaluations"]),
         "error": ours["hp_max_abs_error"],
