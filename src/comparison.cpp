@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <boost/math/constants/constants.hpp>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -14,18 +13,14 @@
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/sampling.hpp"
 #include "frictionref/steady_state.hpp"
+#include "number_text.hpp"
 
 namespace frictionref {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Shortest text that reads back to the same double (values in errors).
-std::string text(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
-}
+std::string text(double value) { return detail::shortest_text(value); }
 
 // Six significant digits (values in reports).
 std::string g(double value) {

@@ -14,6 +14,7 @@
 
 #include "bracketed_root.hpp"
 #include "force_crossings.hpp"
+#include "number_text.hpp"
 #include "frictionref/closed_form.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
@@ -23,11 +24,7 @@ namespace detail {
 
 template <class T>
 std::string to_text(const T& value) {
-  if constexpr (std::is_same_v<T, double>) {  // shortest round-trip form
-    char buffer[32];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-    return std::string(buffer, end);
-  }
+  if constexpr (std::is_same_v<T, double>) return shortest_text(value);  // round-trip form
   std::ostringstream text;
   text.precision(std::numeric_limits<T>::max_digits10);
   text << value;

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <atomic>
 #include <boost/math/constants/constants.hpp>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -21,16 +20,12 @@
 #include "frictionref/model.hpp"
 #include "frictionref/phase.hpp"
 #include "frictionref/steady_state.hpp"
+#include "number_text.hpp"
 
 namespace frictionref {
 namespace {
 
-// Shortest round-trip text, as the model's own messages.
-std::string text(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
-}
+std::string text(double value) { return detail::shortest_text(value); }
 
 void require_lambda(const char* name, double lambda) {
   if (!std::isfinite(lambda)) throw InvalidInput(name, text(lambda), "must be a finite number");

@@ -8,7 +8,6 @@
 
 #include <cctype>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -18,16 +17,12 @@
 #include <string_view>
 
 #include "frictionref/error.hpp"
+#include "number_text.hpp"
 
 namespace frictionref {
 namespace {
 
-// Shortest text that reads back to the same double.
-std::string text(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
-}
+std::string text(double value) { return detail::shortest_text(value); }
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 

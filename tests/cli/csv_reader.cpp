@@ -26,6 +26,14 @@ std::vector<std::string> lines(const std::string& text) {
   return result;
 }
 
+std::size_t Csv::column(const std::string& name) const {
+  const std::vector<std::string> names = split(header, ',');
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return i;
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
 std::string Csv::meta(const std::string& key) const {
   const std::string prefix = key + ": ";
   for (const std::string& line : metadata) {

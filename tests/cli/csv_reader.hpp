@@ -18,6 +18,8 @@ struct Csv {
   std::vector<std::vector<std::string>> rows;
   // The metadata line "<key>: ..." without the key, or "" if missing.
   std::string meta(const std::string& key) const;
+  // Index of the header column `name`; a test failure (and 0) if absent.
+  std::size_t column(const std::string& name) const;
 };
 
 // Comment lines must all come before the header, every row must have as many

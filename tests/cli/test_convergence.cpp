@@ -14,13 +14,7 @@
 namespace frictionref::cli_test {
 namespace {
 
-std::size_t column(const Csv& csv, const std::string& name) {
-  const std::vector<std::string> names = split(csv.header, ',');
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return i;
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
+std::size_t column(const Csv& csv, const std::string& name) { return csv.column(name); }
 
 TEST(Convergence, ErrorsFallAtOrderOneHalfInKf) {
   const RunResult result =

@@ -34,13 +34,7 @@ const char* const kHeader =
     "lambda,regime_simulated,regime_threshold,stuck_fraction,slide_per_period,stops_per_period,"
     "reversals_per_period";
 
-std::size_t column(const Csv& csv, const std::string& name) {
-  const std::vector<std::string> names = split(csv.header, ',');
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return i;
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
+std::size_t column(const Csv& csv, const std::string& name) { return csv.column(name); }
 
 // Sets an environment variable for the lifetime of the object (children inherit it).
 class ScopedEnv {
