@@ -1,5 +1,7 @@
 #include "figure.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <fcntl.h>
 #include <spawn.h>
@@ -89,7 +91,7 @@ std::string script(const Figure& figure, const std::string& data, const std::str
            : fmt::format("set terminal pngcairo size {},{} noenhanced font 'Sans,10'\n",
                          figure.width, height);
   s += "set output " + quoted(output) + "\n";
-  s += "set grid lc rgb '#dddddd'\nset key top right box opaque\nset datafile missing 'nan'\n";
+  s += "set grid lc rgb '#dddddd'\nset datafile missing 'nan'\n";
   s += "set autoscale\n";
   s += fmt::format("set multiplot layout {},1 title {}\n", figure.panels.size(),
                    quoted(figure.title));
@@ -100,6 +102,10 @@ std::string script(const Figure& figure, const std::string& data, const std::str
     s += "set ylabel " + quoted(panel.y_label) + "\n";
     s += panel.log_x ? "set logscale x\nset format x '%.0e'\n" : "unset logscale x\nset format x '% h'\n";
     s += panel.log_y ? "set logscale y\nset format y '%.0e'\n" : "unset logscale y\nset format y '% h'\n";
+    // A key only where some series has a name (else gnuplot draws an empty box).
+    const bool named = std::any_of(panel.series.begin(), panel.series.end(),
+                                   [](const Series& series) { return !series.title.empty(); });
+    s += named ? "set key top right box opaque\n" : "unset key\n";
     s += "unset arrow\n";
     for (double x : panel.vertical_lines)
       s += fmt::format("set arrow from {:.17g}, graph 0 to {:.17g}, graph 1 nohead dt 2 lc rgb "
