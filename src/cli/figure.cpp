@@ -108,8 +108,8 @@ std::string script(const Figure& figure, const std::string& data, const std::str
     s += named ? "set key top right box opaque\n" : "unset key\n";
     s += "unset arrow\n";
     for (double x : panel.vertical_lines)
-      s += fmt::format("set arrow from {:.17g}, graph 0 to {:.17g}, graph 1 nohead dt 2 lc rgb "
-                       "'#555555'\n",
+      s += fmt::format("set arrow from {:.17g}, graph 0 to {:.17g}, graph 1 nohead front dt 2 "
+                       "lc rgb '#555555'\n",  // front: not hidden under a curve drawn there
                        x, x);
     std::string plots;
     int colour = 0;
