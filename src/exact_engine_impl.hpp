@@ -201,11 +201,12 @@ constexpr double kPredictionWindow = 0.05;
 }  // namespace detail
 
 template <class Real>
-auto BasicExactEngine<Real>::prediction_for(const Work& phase) const -> const StopPrediction* {
+int BasicExactEngine<Real>::prediction_for(const Work& phase) const {
   using std::fabs;
-  for (const StopPrediction& p : predictions_)
-    if (p.valid && fabs(phase - p.phase) < Work(detail::kPredictionWindow)) return &p;
-  return nullptr;
+  for (std::size_t i = 0; i < predictions_.size(); ++i)
+    if (predictions_[i].valid && fabs(phase - predictions_[i].phase) < Work(detail::kPredictionWindow))
+      return static_cast<int>(i);
+  return -1;
 }
 
 template <class Real>
@@ -217,12 +218,12 @@ void BasicExactEngine<Real>::remember_stop(const Law& law, const Work& phase, co
   // d tau / d a = (s b sin a - r) / (s b sin tau - r).
   const Work dtau_da = (Work(s) * b_ * law.sin_begin() - r_) / root.slope;
   // The slot of this start phase, else the oldest one.
-  StopPrediction* slot = const_cast<StopPrediction*>(prediction_for(phase));
-  if (slot == nullptr) {
-    slot = &predictions_[next_prediction_slot_];
+  int slot = prediction_for(phase);
+  if (slot < 0) {
+    slot = next_prediction_slot_;
     next_prediction_slot_ = (next_prediction_slot_ + 1) % static_cast<int>(predictions_.size());
   }
-  *slot = {true, phase, root.h, dtau_da - 1};
+  predictions_[slot] = {true, phase, root.h, dtau_da - 1};
 }
 
 template <class Real>
@@ -277,7 +278,8 @@ template <class Real>
 void BasicExactEngine<Real>::slip_root(const Law& law, Work lo, Work hi, Point& root) {
   const Work phase = v_ == 0 ? normalised_phase(tau_, law.sign()) : Work(0);
   if (v_ == 0) {
-    if (const StopPrediction* p = prediction_for(phase)) {
+    if (const int slot = prediction_for(phase); slot >= 0) {
+      const StopPrediction* p = &predictions_[slot];
       const Work guess = tau_ + p->length + p->dlength_dstart * (phase - p->phase);
       if (guess > lo && guess < hi && halley_root(law, guess, lo, hi, root)) {
         ++summary_.predicted_stops;

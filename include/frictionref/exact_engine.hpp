@@ -116,7 +116,7 @@ class BasicExactEngine {
     Work dlength_dstart = 0;
   };
   Work normalised_phase(const Work& tau, int s) const;
-  const StopPrediction* prediction_for(const Work& phase) const;
+  int prediction_for(const Work& phase) const;  // the slot within the window, or -1
   void remember_stop(const Law& law, const Work& phase, const Point& root);
 
   BasicModel<Real> model_;
