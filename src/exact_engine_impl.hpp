@@ -184,13 +184,11 @@ int BasicExactEngine<Real>::direction_at_rest(const Work& tau, const Work& sin_t
 
 template <class Real>
 auto BasicExactEngine<Real>::normalised_phase(const Work& tau, int s) const -> Work {
-  // Only compared with other such phases within kPredictionWindow: the period
-  // count is taken in double (see ForceCrossings::periods_in).
-  const Work two_pi = boost::math::constants::two_pi<Work>();
+  // In [-pi, pi] give or take rounding: only compared with other such phases
+  // within kPredictionWindow, so the period count need not be exact.
   const Work shifted = s > 0 ? tau : tau - boost::math::constants::pi<Work>();
-  const Work periods(
-      std::floor(static_cast<double>(shifted * boost::math::constants::one_div_two_pi<Work>())));
-  return shifted - two_pi * periods;
+  return shifted -
+         boost::math::constants::two_pi<Work>() * detail::ForceCrossings<Work>::periods_in(shifted);
 }
 
 namespace detail {

@@ -81,10 +81,6 @@ class ForceCrossings {
     return minimum < maximum ? Critical{minimum, true} : Critical{maximum, false};
   }
 
- private:
-  static Work pi() { return boost::math::constants::pi<Work>(); }
-  static Work two_pi() { return boost::math::constants::two_pi<Work>(); }
-
   // x / 2 pi rounded to an integer, give or take one: one estimate serves
   // every base in [0, 2 pi] (the exact k is then within 2 of it). Taken with
   // llrint, as an x87 floor or ceil costs as much as a cos call, and these
@@ -94,6 +90,10 @@ class ForceCrossings {
     const Work inverse_two_pi = boost::math::constants::one_div_two_pi<Work>();
     return Work(llrint(x * inverse_two_pi));
   }
+
+ private:
+  static Work pi() { return boost::math::constants::pi<Work>(); }
+  static Work two_pi() { return boost::math::constants::two_pi<Work>(); }
 
   // Smallest base + 2 pi k >= tau, for 0 <= base <= 2 pi, from the estimate
   // k0 = periods_in(tau) (the loops make k exact; each runs at most twice).

@@ -111,16 +111,16 @@ class PhaseLaw {
   const Work& cos_begin() const { return cos_a_; }
   const Work& sin_begin() const { return sin_a_; }
 
+  // v = s (s v): the sign is exact, so this is v_a + b (cos a - cos tau) - s r h.
   Work velocity(const Work& tau) const {
     if (s_ == 0) return Work(0);
-    const Work h = tau - tau_a_;
-    return v_a_ + b_ * cos_difference(sin_cos(h / 2)) - Work(s_) * r_ * h;
+    return Work(s_) * speed_along_slip(tau);
   }
 
   // s * v: positive while the slip lasts; the function whose root ends it.
   Work speed_along_slip(const Work& tau) const {
     const Work h = tau - tau_a_;
-    return Work(s_) * (v_a_ + b_ * cos_difference(sin_cos(h / 2))) - r_ * h;
+    return speed(h, sin_cos(h / 2));
   }
 
   // d(s * v) / d tau = s b sin tau - r.
@@ -176,6 +176,11 @@ class PhaseLaw {
   }
 
  private:
+  // s v at h = tau - tau_a, from sin and cos of h / 2.
+  Work speed(const Work& h, const SinCos<Work>& half) const {
+    return Work(s_) * (v_a_ + b_ * cos_difference(half)) - r_ * h;
+  }
+
   Point assemble(const Work& tau, const Work& h, const SinCos<Work>& half) const {
     Point p;
     p.tau = tau;
@@ -183,7 +188,7 @@ class PhaseLaw {
     p.half = half;
     const Work sin_h = 2 * half.sin * half.cos;
     const Work one_minus_cos_h = 2 * half.sin * half.sin;
-    p.speed = Work(s_) * (v_a_ + b_ * cos_difference(half)) - r_ * h;
+    p.speed = speed(h, half);
     // sin, cos of tau = a + h by the sum formulas (cos h = 1 - (1 - cos h)).
     p.at.sin = sin_a_ + (sin_h * cos_a_ - one_minus_cos_h * sin_a_);
     p.at.cos = cos_a_ - (sin_h * sin_a_ + one_minus_cos_h * cos_a_);

@@ -111,7 +111,7 @@ class BasicExactEngine {
   // the slip's length with respect to its start, for a first-order guess.
   struct StopPrediction {
     bool valid = false;
-    Work phase = 0;  // start phase, normalised to [0, 2 pi) for a forward slip
+    Work phase = 0;  // start phase mod 2 pi (in [-pi, pi]) of the equivalent forward slip
     Work length = 0;
     Work dlength_dstart = 0;
   };
