@@ -78,6 +78,8 @@ BasicExactEngine<Real>::BasicExactEngine(const BasicModel<Real>& model, const Re
   using std::isfinite;
   model.validate();
   options.validate();
+  if (!model.is_harmonic_coulomb())  // temporary, until the general phase laws land
+    throw InvalidInput("model", "general", "only the seed's model is supported so far");
   if (!isfinite(t_end)) throw InvalidInput("t_end", detail::to_text(t_end), "must be a finite number");
   if (!(t_end > model.t0))
     throw InvalidInput("t_end", detail::to_text(t_end),

@@ -1,10 +1,20 @@
-// The physical model: a mass m on a Coulomb-friction surface, driven by
-// F(t) = B sin(w t), starting from (x0, v0) at t0. All values in user units
-// (any consistent set: force = mass * length / time^2).
+// The physical model: the general friction oscillator (docs/theory.md 1 and 7).
 //
-//   v > 0:  m x'' = B sin(w t) - R
-//   v < 0:  m x'' = B sin(w t) + R
-//   v = 0:  stays at rest while |B sin(w t)| <= R (static friction = sliding friction)
+//   m x'' + c x' + k x = F(t) - f,
+//   F(t) = F0 + B sin(w t) + sum_i B_i sin(w_i t + phi_i),
+//
+// starting from (x0, v0) at t0, all values in user units (any consistent set:
+// force = mass * length / time^2). The friction force f follows Coulomb's law
+// with a static limit Rs >= R (sliding friction R):
+//
+//   v != 0:  f = R sign(v)
+//   v  = 0:  N(t) = F(t) - k x is the net non-friction force; the mass stays at
+//            rest while |N| <= Rs and breaks away in the direction of N the
+//            first time |N| > Rs. A slip that reaches v = 0 sticks if
+//            |N| <= Rs there, else it goes on at once in the direction of N.
+//
+// With k = c = F0 = 0, no extra harmonics and Rs = R this is the seed's
+// model (Tou & Schultheiss, USNRC problem 7): m x'' = B sin(w t) - R sign(v).
 //
 // Generic over the scalar type so the same engine runs in double and in a
 // Boost.Multiprecision type (see multiprecision.hpp).
@@ -12,41 +22,90 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "frictionref/error.hpp"
 
 namespace frictionref {
 
+// One extra term B_i sin(w_i t + phi_i) of the driving force.
+template <class Real>
+struct BasicHarmonic {
+  Real amplitude = 0;  // B_i [force]; finite, either sign
+  Real omega = 1;      // w_i [rad / time unit]; finite, > 0
+  Real phase = 0;      // phi_i [rad]; finite
+
+  bool operator==(const BasicHarmonic& other) const {
+    return amplitude == other.amplitude && omega == other.omega && phase == other.phase;
+  }
+};
+
 template <class Real>
 struct BasicModel {
   Real mass = 1;       // m: mass; finite, > 0
-  Real amplitude = 1;  // B: amplitude of the driving force B sin(w t); finite, >= 0
-  Real omega = 1;      // w: angular frequency of the force [rad / time unit]; finite, > 0
-  Real friction = 0;   // R: Coulomb friction force magnitude (static = sliding); finite, >= 0
-  Real x0 = 0;         // initial position; finite
-  Real v0 = 0;         // initial velocity; finite, either sign
-  Real t0 = 0;         // initial time; finite, any sign (the force phase is w t, not w (t - t0))
+  Real amplitude = 1;  // B: amplitude of the first harmonic B sin(w t); finite, >= 0
+  Real omega = 1;      // w: its angular frequency [rad / time unit]; finite, > 0. Also the
+                       // engine's clock: phases are resolved to 8 eps max(1, |w t|) / w.
+  Real friction = 0;   // R: sliding (kinetic) friction force; finite, >= 0
+  // Rs: static friction force, the largest |N| the mass resists at rest;
+  // finite, >= friction. Unset: equal to friction (static = sliding).
+  std::optional<Real> static_friction;
+  Real stiffness = 0;     // k: restoring spring [force / length]; finite, >= 0
+  Real damping = 0;       // c: viscous damper [force * time / length]; finite, >= 0
+  Real force_offset = 0;  // F0: constant force [force]; finite, either sign
+  std::vector<BasicHarmonic<Real>> harmonics;  // further terms of F(t)
+  Real x0 = 0;  // initial position; finite
+  Real v0 = 0;  // initial velocity; finite, either sign
+  Real t0 = 0;  // initial time; finite, any sign (the force phase is w t, not w (t - t0))
 
-  // lambda = R / B, the one dimensionless parameter of the steady state.
+  // lambda = R / B, the one dimensionless parameter of the seed's steady state.
   // +infinity when B = 0 < R; NaN when B = R = 0.
   Real lambda() const { return friction / amplitude; }
 
-  // The driving force B sin(w t).
-  Real force(const Real& t) const {
-    using std::sin;
-    return amplitude * sin(omega * t);
+  // Rs: the static friction force (friction when not set).
+  Real static_limit() const { return static_friction ? *static_friction : friction; }
+
+  // True for the seed's model, m x'' = B sin(w t) - R sign(v) with Rs = R: no
+  // spring, damper, offset or extra harmonics. The engine solves it with its
+  // closed-form critical times (docs/theory.md 3); every other model goes
+  // through the general phase laws (docs/theory.md 7).
+  bool is_harmonic_coulomb() const {
+    return stiffness == 0 && damping == 0 && force_offset == 0 && harmonics.empty() &&
+           static_limit() == friction;
   }
 
-  // Throws InvalidInput naming the first field that breaks its rule.
+  // The driving force F(t) (without the spring, damper and friction).
+  Real force(const Real& t) const {
+    using std::sin;
+    Real f = force_offset + amplitude * sin(omega * t);
+    for (const auto& h : harmonics) f += h.amplitude * sin(h.omega * t + h.phase);
+    return f;
+  }
+
+  // Throws InvalidInput naming the first field that breaks its rule
+  // (harmonic fields as "harmonics[i].omega", 0-based).
   void validate() const {
     require_finite("mass", mass);
     require_finite("amplitude", amplitude);
     require_finite("omega", omega);
     require_finite("friction", friction);
+    if (static_friction) require_finite("static_friction", *static_friction);
+    require_finite("stiffness", stiffness);
+    require_finite("damping", damping);
+    require_finite("force_offset", force_offset);
+    for (std::size_t i = 0; i < harmonics.size(); ++i) {
+      const std::string name = "harmonics[" + std::to_string(i) + "].";
+      require_finite((name + "amplitude").c_str(), harmonics[i].amplitude);
+      require_finite((name + "omega").c_str(), harmonics[i].omega);
+      require_finite((name + "phase").c_str(), harmonics[i].phase);
+      if (!(harmonics[i].omega > 0)) fail((name + "omega").c_str(), harmonics[i].omega, "must be > 0");
+    }
     require_finite("x0", x0);
     require_finite("v0", v0);
     require_finite("t0", t0);
@@ -54,27 +113,36 @@ struct BasicModel {
     if (!(amplitude >= 0)) fail("amplitude", amplitude, "must be >= 0");
     if (!(omega > 0)) fail("omega", omega, "must be > 0");
     if (!(friction >= 0)) fail("friction", friction, "must be >= 0");
+    if (static_friction && !(*static_friction >= friction))
+      fail("static_friction", *static_friction,
+           ("must be >= the sliding friction R = " + text_of(friction)).c_str());
+    if (!(stiffness >= 0)) fail("stiffness", stiffness, "must be >= 0");
+    if (!(damping >= 0)) fail("damping", damping, "must be >= 0");
   }
 
  private:
+  static std::string text_of(const Real& value) {
+    if constexpr (std::is_same_v<Real, double>) {  // shortest round-trip form
+      char buffer[32];
+      const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+      return std::string(buffer, end);
+    }
+    std::ostringstream text;
+    text.precision(std::numeric_limits<Real>::max_digits10);
+    text << value;
+    return text.str();
+  }
   static void require_finite(const char* name, const Real& value) {
     using std::isfinite;
     if (!isfinite(value)) fail(name, value, "must be a finite number");
   }
   [[noreturn]] static void fail(const char* name, const Real& value, const char* rule) {
-    if constexpr (std::is_same_v<Real, double>) {  // shortest round-trip form
-      char buffer[32];
-      const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-      throw InvalidInput(name, std::string(buffer, end), rule);
-    }
-    std::ostringstream text;
-    text.precision(std::numeric_limits<Real>::max_digits10);
-    text << value;
-    throw InvalidInput(name, text.str(), rule);
+    throw InvalidInput(name, text_of(value), rule);
   }
 };
 
 using Model = BasicModel<double>;
+using Harmonic = BasicHarmonic<double>;
 
 // The same model in another scalar type (exact for double -> wider types).
 template <class To, class From>
@@ -84,6 +152,11 @@ BasicModel<To> model_cast(const BasicModel<From>& m) {
   r.amplitude = To(m.amplitude);
   r.omega = To(m.omega);
   r.friction = To(m.friction);
+  if (m.static_friction) r.static_friction = To(*m.static_friction);
+  r.stiffness = To(m.stiffness);
+  r.damping = To(m.damping);
+  r.force_offset = To(m.force_offset);
+  for (const auto& h : m.harmonics) r.harmonics.push_back({To(h.amplitude), To(h.omega), To(h.phase)});
   r.x0 = To(m.x0);
   r.v0 = To(m.v0);
   r.t0 = To(m.t0);
