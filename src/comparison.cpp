@@ -13,7 +13,7 @@
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/sampling.hpp"
 #include "frictionref/steady_state.hpp"
-#include "number_text.hpp"
+#include "frictionref/detail/number_text.hpp"
 
 namespace frictionref {
 namespace {

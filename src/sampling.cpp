@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -50,7 +51,7 @@ UniformSampler::UniformSampler(const Model& model, const GridOptions& options)
     : model_(model), options_(options), engine_(model, options.t_end) {
   options.validate(model.t0);
   have_phase_ = engine_.next(phase_);
-  if (have_phase_) law_.emplace(phase_law(model_, phase_));
+  if (have_phase_) law_.emplace(model_, phase_);
 }
 
 double UniformSampler::grid_time(std::uint64_t i) const {
@@ -65,7 +66,7 @@ bool UniformSampler::finish() {
 bool UniformSampler::advance_to(double t) {
   while (t >= phase_.t_end && phase_.t_end < options_.t_end) {
     if (!engine_.next(phase_)) return false;
-    law_.emplace(phase_law(model_, phase_));
+    law_.emplace(model_, phase_);
   }
   return true;
 }
@@ -82,11 +83,11 @@ bool UniformSampler::next(State& state) {
   if (options_.include_events && phase_.t_end < t) {
     const double boundary = phase_.t_end;
     if (!advance_to(boundary)) return finish();
-    state = evaluate(model_, *law_, phase_, boundary);
+    state = (*law_)(boundary);
     return true;
   }
   if (!advance_to(t)) return finish();
-  state = evaluate(model_, *law_, phase_, t);
+  state = (*law_)(t);
   if (on_grid) {
     ++index_;
   } else {
@@ -118,13 +119,18 @@ std::vector<State> sample_at(const Model& model, const std::vector<double>& time
   ExactEngine engine(model, last);
   Phase phase;
   engine.next(phase);
+  std::optional<PhaseEvaluator> law(std::in_place, model, phase);
   states.reserve(times.size());
   for (double t : times) {
     // An engine that stops early (a status, never expected) must not loop here.
-    while (t >= phase.t_end && phase.t_end < last)
+    bool moved = false;
+    while (t >= phase.t_end && phase.t_end < last) {
       if (!engine.next(phase))
         throw std::runtime_error("exact engine: " + engine.summary().message);
-    states.push_back(evaluate(model, phase, t));
+      moved = true;
+    }
+    if (moved) law.emplace(model, phase);
+    states.push_back((*law)(t));
   }
   return states;
 }

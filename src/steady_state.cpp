@@ -9,7 +9,7 @@
 #include <limits>
 #include <sstream>
 
-#include "bracketed_root.hpp"
+#include "engine/scalar_traits.hpp"
 #include "frictionref/error.hpp"
 
 namespace frictionref {
@@ -34,7 +34,7 @@ Long dead_band_stop(Long lambda, Long alpha) {
   const Long hi = pi + alpha;
   if (speed(hi) >= 0) return hi;  // lambda = lambda*: the dead band has zero length
   std::uint64_t calls = 0;
-  return detail::decreasing_root<Long>(speed, slope, lo, hi, calls).root;
+  return detail::ScalarTraits<double>::decreasing_root(speed, slope, lo, hi, calls).root;
 }
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();

@@ -20,7 +20,7 @@
 #include "frictionref/model.hpp"
 #include "frictionref/phase.hpp"
 #include "frictionref/steady_state.hpp"
-#include "number_text.hpp"
+#include "frictionref/detail/number_text.hpp"
 
 namespace frictionref {
 namespace {

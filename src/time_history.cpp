@@ -17,7 +17,7 @@
 #include <string_view>
 
 #include "frictionref/error.hpp"
-#include "number_text.hpp"
+#include "frictionref/detail/number_text.hpp"
 
 namespace frictionref {
 namespace {

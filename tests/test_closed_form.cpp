@@ -15,7 +15,7 @@
 #include <random>
 #include <string>
 
-#include "frictionref/closed_form.hpp"
+#include "laws/harmonic_coulomb/phase_law.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
 #include "frictionref/phase.hpp"
@@ -24,6 +24,7 @@ namespace frictionref {
 namespace {
 
 using Long = long double;
+using detail::PhaseLaw;
 
 // Portable uniform numbers in [lo, hi) from a fixed seed (the standard
 // distributions are implementation-defined; the engine is not).

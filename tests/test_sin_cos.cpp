@@ -7,7 +7,7 @@
 #include <limits>
 #include <random>
 
-#include "frictionref/sin_cos.hpp"
+#include "numeric/sin_cos.hpp"
 
 namespace frictionref {
 namespace {

@@ -1,7 +1,6 @@
 // Everything public in one include.
 #pragma once
 
-#include "frictionref/closed_form.hpp"
 #include "frictionref/comparison.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"

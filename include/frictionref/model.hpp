@@ -20,16 +20,13 @@
 // Boost.Multiprecision type (see multiprecision.hpp).
 #pragma once
 
-#include <charconv>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <optional>
-#include <sstream>
 #include <string>
-#include <type_traits>
 #include <vector>
 
+#include "frictionref/detail/number_text.hpp"
 #include "frictionref/error.hpp"
 
 namespace frictionref {
@@ -121,17 +118,7 @@ struct BasicModel {
   }
 
  private:
-  static std::string text_of(const Real& value) {
-    if constexpr (std::is_same_v<Real, double>) {  // shortest round-trip form
-      char buffer[32];
-      const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-      return std::string(buffer, end);
-    }
-    std::ostringstream text;
-    text.precision(std::numeric_limits<Real>::max_digits10);
-    text << value;
-    return text.str();
-  }
+  static std::string text_of(const Real& value) { return detail::to_text(value); }
   static void require_finite(const char* name, const Real& value) {
     using std::isfinite;
     if (!isfinite(value)) fail(name, value, "must be a finite number");

@@ -16,5 +16,9 @@ extern template struct BasicSummary<HighPrecision>;
 extern template struct BasicSolution<HighPrecision>;
 extern template BasicSolution<HighPrecision> solve(const BasicModel<HighPrecision>&,
                                                    const HighPrecision&, const SolveOptions&);
+extern template class BasicPhaseEvaluator<HighPrecision>;
+extern template BasicState<HighPrecision> evaluate(const BasicModel<HighPrecision>&,
+                                                   const BasicPhase<HighPrecision>&,
+                                                   const HighPrecision&);
 
 }  // namespace frictionref

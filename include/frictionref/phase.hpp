@@ -1,7 +1,8 @@
 // One stick or slip phase of the exact solution, and dense evaluation inside it.
 #pragma once
 
-#include "frictionref/closed_form.hpp"
+#include <memory>
+
 #include "frictionref/model.hpp"
 #include "frictionref/types.hpp"
 
@@ -33,56 +34,43 @@ struct BasicState {
   PhaseKind phase = PhaseKind::stick;
 };
 
-using Phase = BasicPhase<double>;
-using State = BasicState<double>;
-
-// The law of `phase` (built once per phase by samplers; evaluate() below
-// builds it for each call).
+namespace detail {
 template <class Real>
-PhaseLaw<work_t<Real>> phase_law(const BasicModel<Real>& model, const BasicPhase<Real>& phase) {
-  using Work = work_t<Real>;
-  const Work omega(model.omega);
-  return PhaseLaw<Work>(model, phase.kind, omega * Work(phase.t_begin), Work(phase.x_begin),
-                        Work(phase.v_begin));
-}
+class PhaseFormula;  // the closed form of a phase of one family of laws (src/engine)
+}  // namespace detail
 
-// State at time t inside `phase` (t_begin <= t <= t_end) from its law, in
-// closed form: one sin_cos. At t_end it returns the phase's stored end state
-// exactly, and at t_begin its start state.
+// The closed form of one phase, built once from the model and the phase's
+// start (samplers evaluate it at many times: one sin_cos per sample for the
+// seed's model).
 template <class Real>
-BasicState<Real> evaluate(const BasicModel<Real>& model, const PhaseLaw<work_t<Real>>& law,
-                          const BasicPhase<Real>& phase, const Real& t) {
-  using Work = work_t<Real>;
-  BasicState<Real> state;
-  state.t = t;
-  state.phase = phase.kind;
-  if (phase.kind == PhaseKind::stick) {
-    state.x = t == phase.t_end ? phase.x_end : phase.x_begin;
-    state.v = t == phase.t_end ? phase.v_end : t == phase.t_begin ? phase.v_begin : 0;
-    state.a = 0;
-    return state;
-  }
-  const auto point = law.point(Work(model.omega) * Work(t));
-  state.a = Real(law.acceleration_at(point.at));
-  if (t == phase.t_end) {
-    state.x = phase.x_end;
-    state.v = phase.v_end;
-  } else if (t == phase.t_begin) {
-    state.x = phase.x_begin;
-    state.v = phase.v_begin;
-  } else {
-    state.x = Real(law.position(point));
-    state.v = Real(Work(law.sign()) * point.speed);  // s (s v) = v
-  }
-  return state;
-}
+class BasicPhaseEvaluator {
+ public:
+  BasicPhaseEvaluator(const BasicModel<Real>& model, const BasicPhase<Real>& phase);
+  ~BasicPhaseEvaluator();
+  BasicPhaseEvaluator(BasicPhaseEvaluator&&) noexcept;
+  BasicPhaseEvaluator& operator=(BasicPhaseEvaluator&&) noexcept;
 
-// State at time t inside `phase` (t_begin <= t <= t_end), in closed form.
-// At t_end it returns the phase's stored end state exactly.
+  // State at time t inside the phase (t_begin <= t <= t_end), in closed form.
+  // At t_end it returns the phase's stored end state exactly, and at t_begin
+  // its start state.
+  BasicState<Real> operator()(const Real& t) const;
+
+ private:
+  std::unique_ptr<const detail::PhaseFormula<Real>> formula_;
+};
+
+// State at time t inside `phase` (t_begin <= t <= t_end), in closed form
+// (builds the phase's evaluator for this one call).
 template <class Real>
 BasicState<Real> evaluate(const BasicModel<Real>& model, const BasicPhase<Real>& phase,
-                          const Real& t) {
-  return evaluate(model, phase_law(model, phase), phase, t);
-}
+                          const Real& t);
+
+using Phase = BasicPhase<double>;
+using State = BasicState<double>;
+using PhaseEvaluator = BasicPhaseEvaluator<double>;
+
+extern template class BasicPhaseEvaluator<double>;
+extern template BasicState<double> evaluate(const BasicModel<double>&, const BasicPhase<double>&,
+                                            const double&);
 
 }  // namespace frictionref

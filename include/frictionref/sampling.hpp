@@ -48,8 +48,9 @@ class UniformSampler {
   ExactEngine engine_;
   Phase phase_;
   bool have_phase_ = false;
-  // The law of phase_, built once per phase (a sample then costs one sin_cos).
-  std::optional<PhaseLaw<long double>> law_;
+  // The closed form of phase_, built once per phase (a sample of the seed's
+  // model then costs one sin_cos).
+  std::optional<PhaseEvaluator> law_;
   std::uint64_t index_ = 0;
   bool finished_ = false;
 };

@@ -1,4 +1,5 @@
-// Closed-form motion inside one phase (THEORY.md, docs/theory.md section 2).
+// The seed's phase law: closed-form motion inside one phase of the harmonically
+// forced Coulomb oscillator (docs/theory.md section 2).
 //
 // With tau = w t and the force and friction expressed as velocity changes per
 // radian of forcing phase, b = B / (m w) and r = R / (m w), a slip of sign s
@@ -15,25 +16,10 @@
 #include <cmath>
 
 #include "frictionref/model.hpp"
-#include "frictionref/sin_cos.hpp"
 #include "frictionref/types.hpp"
+#include "numeric/sin_cos.hpp"
 
-namespace frictionref {
-
-// The type the engine computes in: wider than the output type where the
-// hardware has one, so event times chained over 10^5 periods keep full double
-// accuracy (x86-64 long double: 64-bit mantissa). Multiprecision types compute
-// in themselves.
-template <class Real>
-struct WorkType {
-  using type = Real;
-};
-template <>
-struct WorkType<double> {
-  using type = long double;
-};
-template <class Real>
-using work_t = typename WorkType<Real>::type;
+namespace frictionref::detail {
 
 template <class Work>
 class PhaseLaw {
@@ -203,4 +189,4 @@ class PhaseLaw {
   Work cos_a_, sin_a_;
 };
 
-}  // namespace frictionref
+}  // namespace frictionref::detail

@@ -1,5 +1,10 @@
-// The zero of a strictly decreasing function on a bracket [lo, hi] with
-// f(lo) > 0 >= f(hi): the end of a slip inside one monotone piece.
+// The zero of a strictly monotone function on a bracket: the end of a slip or
+// of a stick once the event search (docs/theory.md 3.4, 7.4) has isolated it.
+//
+// Every solver returns the bracket it closed, the iterations it used and a
+// status that says whether it converged, hit its iteration cap or lost the
+// bracket (Boost.Math's max_iter comes back as the count used; "converged"
+// after hitting the cap would hide a failure).
 //
 // long double (the work type of the double engine): GSL's Brent solver
 // brings the bracket to double resolution, then a safeguarded Newton polish
@@ -17,31 +22,44 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
-#include <type_traits>
+#include <string_view>
 
 namespace frictionref::detail {
 
-// GSL Brent on [lo, hi] to a relative width of 1e-9 (f(lo), f(hi) of opposite signs, checked by the
-// caller). Returns false if GSL reports an error; `root` is then unchanged.
-bool gsl_brent(double (*f)(double, void*), void* params, double lo, double hi, double& root,
-               std::uint64_t& calls);
+enum class RootStatus {
+  converged,      // the bracket is closed to the solver's tolerance
+  iteration_cap,  // the solver ran out of iterations; root is the best bracket end
+  lost_bracket,   // the function values did not keep a sign change (an invariant broken)
+};
+
+std::string_view to_string(RootStatus status);
 
 template <class Work>
-struct RootBracket {
-  Work root;  // the best estimate, inside [lo, hi]
+struct RootResult {
+  Work root;  // the best estimate, inside [lo, hi]; f(root) <= 0 for a decreasing f
   Work lo;    // f(lo) > 0
   Work hi;    // f(hi) <= 0
-  bool ok = true;
+  std::uint64_t iterations = 0;  // function evaluations made by the solver
+  RootStatus status = RootStatus::converged;
+
+  bool ok() const { return status == RootStatus::converged; }
 };
+
+// GSL Brent on [lo, hi] to a relative width of 1e-9 (f(lo), f(hi) of
+// opposite signs, checked by the caller). `iterations` counts Brent steps.
+// Returns lost_bracket if GSL reports an error (`root` is then unchanged) and
+// iteration_cap after 100 steps.
+RootStatus gsl_brent(double (*f)(double, void*), void* params, double lo, double hi,
+                     double& root, std::uint64_t& iterations);
 
 // Boost.Math TOMS 748 (Alefeld, Potra, Shi 1995) to the type's precision.
 template <class Work, class F>
-RootBracket<Work> toms748_root(const F& f, const Work& lo, const Work& hi, std::uint64_t& calls) {
-  RootBracket<Work> result{lo, lo, hi, true};
+RootResult<Work> toms748_root(const F& f, const Work& lo, const Work& hi) {
+  RootResult<Work> result{lo, lo, hi};
   constexpr std::uintmax_t kMaxIterations = 400;
   std::uintmax_t iterations = kMaxIterations;
   const auto counted = [&](const Work& x) {
-    ++calls;
+    ++result.iterations;
     return f(x);
   };
   try {
@@ -50,17 +68,19 @@ RootBracket<Work> toms748_root(const F& f, const Work& lo, const Work& hi, std::
     result.lo = bracket.first;
     result.hi = bracket.second;
     result.root = counted(bracket.second) <= 0 ? bracket.second : bracket.first;
-    result.ok = iterations < kMaxIterations;
+    if (iterations >= kMaxIterations) result.status = RootStatus::iteration_cap;
   } catch (const std::exception&) {  // Boost reports a lost bracket as domain_error
-    result.ok = false;
+    result.status = RootStatus::lost_bracket;
   }
   return result;
 }
 
+// GSL Brent in double, then a safeguarded Newton polish in long double.
+// slope(x) is f'(x); it may be inaccurate (it only steers Newton).
 template <class F, class DF>
-RootBracket<long double> brent_then_newton(const F& f, const DF& slope, long double lo,
-                                           long double hi, std::uint64_t& calls) {
-  RootBracket<long double> result{lo, lo, hi, true};
+RootResult<long double> brent_then_newton(const F& f, const DF& slope, long double lo,
+                                          long double hi) {
+  RootResult<long double> result{lo, lo, hi};
 
   // Stage 1: GSL Brent in double. The bracket ends are rounded to double;
   // if rounding loses the sign change (a root within a double ulp of an end),
@@ -68,7 +88,7 @@ RootBracket<long double> brent_then_newton(const F& f, const DF& slope, long dou
   struct Params {
     const F* f;
     std::uint64_t* calls;
-  } params{&f, &calls};
+  } params{&f, &result.iterations};
   const auto f_double = [](double x, void* p) -> double {
     auto* q = static_cast<Params*>(p);
     ++*q->calls;
@@ -82,7 +102,11 @@ RootBracket<long double> brent_then_newton(const F& f, const DF& slope, long dou
   long double x = lo + (hi - lo) / 2;
   if (lo_d < hi_d) {
     double root_d = 0;
-    if (gsl_brent(+f_double, &params, lo_d, hi_d, root_d, calls)) x = root_d;
+    std::uint64_t brent_steps = 0;
+    // A lost or capped Brent stage only costs a worse start for the polish,
+    // which keeps its own bracket.
+    if (gsl_brent(+f_double, &params, lo_d, hi_d, root_d, brent_steps) == RootStatus::converged)
+      x = root_d;
   }
 
   // Stage 2: safeguarded Newton in long double.
@@ -91,11 +115,13 @@ RootBracket<long double> brent_then_newton(const F& f, const DF& slope, long dou
   // creeps an ulp per step without crossing the root: after two steps that
   // did not halve |f| (or two sub-resolution probes), bisect to the end (64
   // steps at most). Converging Newton steps shrink |f| far faster than that.
+  constexpr int kMaxPolishSteps = 200;
   int sub_resolution_steps = 0;
   int stalled_steps = 0;
   long double previous_fx = HUGE_VALL;
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    ++calls;
+  bool closed = false;
+  for (int iteration = 0; iteration < kMaxPolishSteps; ++iteration) {
+    ++result.iterations;
     const long double fx = f(x);
     stalled_steps = std::fabs(fx) > std::fabs(previous_fx) / 2 ? stalled_steps + 1 : 0;
     previous_fx = fx;
@@ -103,10 +129,16 @@ RootBracket<long double> brent_then_newton(const F& f, const DF& slope, long dou
       result.lo = x;
     } else {
       result.hi = x;
-      if (fx == 0) break;
+      if (fx == 0) {
+        closed = true;
+        break;
+      }
     }
     const long double width = result.hi - result.lo;
-    if (width <= 2 * eps * std::fmax(1.0L, std::fabs(x))) break;
+    if (width <= 2 * eps * std::fmax(1.0L, std::fabs(x))) {
+      closed = true;
+      break;
+    }
     const long double d = slope(x);
     const bool newton = d < 0 && sub_resolution_steps < 2 && stalled_steps < 2;
     long double next = newton ? x - fx / d : result.lo + width / 2;
@@ -120,26 +152,26 @@ RootBracket<long double> brent_then_newton(const F& f, const DF& slope, long dou
     x = next;
   }
   result.root = result.hi;
+  if (!closed) result.status = RootStatus::iteration_cap;
   return result;
 }
 
-// The zero of f on [lo, hi]: GSL + long double polish for long double, TOMS
-// 748 for every other type.
-template <class Work, class F, class DF>
-RootBracket<Work> decreasing_root(const F& f, const DF& slope, const Work& lo, const Work& hi,
-                                  std::uint64_t& calls) {
-  // The caller has seen f(hi) <= 0. If f(lo) is not > 0 either, the zero is
-  // at lo to within the evaluation noise (a slip shorter than rounding, e.g.
-  // one that starts a hair before the force falls back to R): say so rather
-  // than hand a non-bracket to the solvers.
+// The zero of a strictly decreasing f on [lo, hi] with f(hi) <= 0 (seen by
+// the caller), by `solve(f, slope, lo, hi)` (one of the solvers above, chosen
+// by ScalarTraits). Counts every evaluation of f in `calls`.
+template <class Work, class Solver, class F, class DF>
+RootResult<Work> decreasing_root(const Solver& solve, const F& f, const DF& slope, const Work& lo,
+                                 const Work& hi, std::uint64_t& calls) {
+  // If f(lo) is not > 0 either, the zero is at lo to within the evaluation
+  // noise (a slip shorter than rounding, e.g. one that starts a hair before
+  // the force falls back to R): say so rather than hand a non-bracket to the
+  // solvers.
   ++calls;
-  if (!(f(lo) > 0)) return RootBracket<Work>{lo, lo, lo, true};
-  if constexpr (std::is_same_v<Work, long double>) {
-    return brent_then_newton(f, slope, lo, hi, calls);
-  } else {
-    (void)slope;
-    return toms748_root(f, lo, hi, calls);
-  }
+  if (!(f(lo) > 0)) return RootResult<Work>{lo, lo, lo, 1};
+  RootResult<Work> result = solve(f, slope, lo, hi);
+  calls += result.iterations;
+  ++result.iterations;  // the test at lo
+  return result;
 }
 
 }  // namespace frictionref::detail

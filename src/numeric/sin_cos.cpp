@@ -1,4 +1,4 @@
-#include "frictionref/sin_cos.hpp"
+#include "numeric/sin_cos.hpp"
 
 #include <array>
 #include <boost/math/constants/constants.hpp>

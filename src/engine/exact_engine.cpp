@@ -1,5 +1,5 @@
 // The double instantiation of the exact engine (work type long double).
-#include "exact_engine_impl.hpp"
+#include "engine/exact_engine_impl.hpp"
 
 namespace frictionref {
 
@@ -8,9 +8,10 @@ void SolveOptions::validate() const {
 }
 
 double time_resolution(const Model& model, double t) {
-  using Work = work_t<double>;
+  using Work = detail::work_t<double>;
   const Work omega(model.omega);
-  return static_cast<double>(detail::time_resolution<double>(omega * Work(t)) / omega);
+  return static_cast<double>(detail::ScalarTraits<double>::time_resolution(omega * Work(t)) /
+                             omega);
 }
 
 template class BasicExactEngine<double>;
@@ -18,5 +19,8 @@ template struct BasicSummary<double>;
 template struct BasicSolution<double>;
 template BasicSolution<double> solve(const BasicModel<double>&, const double&,
                                      const SolveOptions&);
+template class BasicPhaseEvaluator<double>;
+template BasicState<double> evaluate(const BasicModel<double>&, const BasicPhase<double>&,
+                                     const double&);
 
 }  // namespace frictionref

@@ -1,0 +1,61 @@
+// The driving force of the general model in the engine's units (docs/theory.md
+// 7.1): with tau = w t (w = model.omega) and forces as velocity changes per
+// radian of tau,
+//
+//   g(tau) = f0 + sum_j a_j sin(q_j tau + phi_j),
+//   f0 = F0 / (m w),  a_j = B_j / (m w),  q_j = w_j / w,
+//
+// where term 0 is the first harmonic B sin(w t) (q = 1, phi = 0) when B != 0.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "frictionref/model.hpp"
+
+namespace frictionref::detail {
+
+template <class Work>
+struct ForcingTerm {
+  Work a;      // amplitude [velocity per radian of tau]
+  Work q;      // frequency relative to w; > 0
+  Work phase;  // [rad]
+};
+
+template <class Work>
+class Forcing {
+ public:
+  Forcing() = default;
+  template <class Real>
+  explicit Forcing(const BasicModel<Real>& model) {
+    const Work mw = Work(model.mass) * Work(model.omega);
+    constant_ = Work(model.force_offset) / mw;
+    if (model.amplitude != 0) terms_.push_back({Work(model.amplitude) / mw, Work(1), Work(0)});
+    for (const auto& h : model.harmonics)
+      if (h.amplitude != 0)
+        terms_.push_back({Work(h.amplitude) / mw, Work(h.omega) / Work(model.omega), Work(h.phase)});
+    for (int k = 0; k < kBounds; ++k) {
+      bounds_[k] = 0;
+      for (const auto& term : terms_) {
+        using std::fabs;
+        using std::pow;
+        bounds_[k] += fabs(term.a) * Work(pow(term.q, k));
+      }
+    }
+  }
+
+  const std::vector<ForcingTerm<Work>>& terms() const { return terms_; }
+  const Work& constant() const { return constant_; }
+  bool oscillates() const { return !terms_.empty(); }
+
+  // sum_j |a_j| q_j^k >= |d^k/dtau^k (g - f0)| everywhere, k = 0..4.
+  const Work& bound(int k) const { return bounds_[k]; }
+
+ private:
+  static constexpr int kBounds = 5;
+  std::vector<ForcingTerm<Work>> terms_;
+  Work constant_ = 0;
+  Work bounds_[kBounds] = {0, 0, 0, 0, 0};
+};
+
+}  // namespace frictionref::detail

@@ -1,0 +1,95 @@
+// The net non-friction force on a mass at rest (docs/theory.md 7.5), in the
+// engine's units: n(tau) = g(tau) - rho^2 y at a fixed position y = w x. The
+// mass stays while |n| <= rs; the event search runs on
+//
+//   f(tau) = rs^2 - n^2 = (rs - n)(rs + n),
+//
+// smooth, positive inside the band and zero exactly where |n| = rs, with
+// f' = -2 n n', f'' = -2 (n'^2 + n n''), f''' = -2 (3 n' n'' + n n''') and
+// |n^(k)| <= sum |a| q^k for k >= 1 (forcing.hpp).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "laws/linear_oscillator/oscillator.hpp"
+#include "numeric/first_zero.hpp"
+#include "numeric/sin_cos.hpp"
+
+namespace frictionref::detail {
+
+template <class Work>
+class NetForce {
+ public:
+  struct Point {
+    Work n = 0, d1 = 0, d2 = 0;  // n, n', n''
+    Work e_n = 0, e_d1 = 0, e_d2 = 0;
+  };
+
+  NetForce(const Oscillator<Work>& oscillator, const Work& y)
+      : o_(&oscillator), offset_(oscillator.forcing().constant() - oscillator.rho2() * y) {
+    using std::fabs;
+    const Forcing<Work>& f = oscillator.forcing();
+    mag_offset_ = fabs(oscillator.forcing().constant()) + oscillator.rho2() * fabs(y);
+    const Work n0 = fabs(offset_) + f.bound(0);
+    third_ = 2 * (3 * f.bound(1) * f.bound(2) + n0 * f.bound(3)) *
+             (1 + 64 * std::numeric_limits<Work>::epsilon());
+  }
+
+  Point point(const Work& tau) const {
+    using std::fabs;
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    Point p;
+    p.n = offset_;
+    Work mag_n = mag_offset_, mag_d1 = 0, mag_d2 = 0;
+    Work phase_n = 0, phase_d1 = 0, phase_d2 = 0;
+    for (const auto& term : o_->forcing().terms()) {
+      const Work theta = term.q * tau + term.phase;
+      const SinCos<Work> sc = sin_cos(theta);
+      const Work abs_a = fabs(term.a);
+      const Work q2 = term.q * term.q;
+      p.n += term.a * sc.sin;
+      p.d1 += term.a * term.q * sc.cos;
+      p.d2 -= term.a * q2 * sc.sin;
+      mag_n += abs_a;
+      mag_d1 += abs_a * term.q;
+      mag_d2 += abs_a * q2;
+      const Work arg = fabs(theta) + fabs(term.phase);
+      phase_n += abs_a * term.q * arg;
+      phase_d1 += abs_a * q2 * arg;
+      phase_d2 += abs_a * q2 * term.q * arg;
+    }
+    const Work k = kUlps * eps;
+    p.e_n = k * mag_n + eps * phase_n;
+    p.e_d1 = k * mag_d1 + eps * phase_d1;
+    p.e_d2 = k * mag_d2 + eps * phase_d2;
+    return p;
+  }
+
+  // The jet of f = rs^2 - n^2.
+  Jet<Work> jet(const Point& p) const {
+    using std::fabs;
+    const Work rs = o_->rs();
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    Jet<Work> j;
+    j.f = (rs - p.n) * (rs + p.n);
+    j.d1 = -2 * p.n * p.d1;
+    j.d2 = -2 * (p.d1 * p.d1 + p.n * p.d2);
+    const Work an = fabs(p.n), a1 = fabs(p.d1), a2 = fabs(p.d2);
+    j.e0 = (rs + an) * p.e_n * 2 + 4 * eps * fabs(j.f);
+    j.e1 = 2 * (a1 * p.e_n + an * p.e_d1) * 2 + 4 * eps * fabs(j.d1);
+    j.e2 = 2 * (2 * a1 * p.e_d1 + a2 * p.e_n + an * p.e_d2) * 2 + 8 * eps * (a1 * a1 + an * a2);
+    return j;
+  }
+
+  Work third_bound() const { return third_; }
+
+ private:
+  static constexpr int kUlps = 64;
+  const Oscillator<Work>* o_;
+  Work offset_;      // f0 - rho^2 y
+  Work mag_offset_;  // |f0| + rho^2 |y|
+  Work third_ = 0;   // >= |f'''| everywhere
+};
+
+}  // namespace frictionref::detail

@@ -1,0 +1,187 @@
+// The homogeneous part of a slip of the linear oscillator (docs/theory.md 7.2):
+//
+//   y'' + 2 sigma y' + rho^2 y = p0     (derivatives in tau = w t; y = w x, y' = v)
+//
+// from a state (y_a, v_a) at u = tau - tau_a = 0 reaches
+//
+//   y(u) = Phi11 y_a + G  v_a + p0 G1,      v(u) = -rho^2 G y_a + G' v_a + p0 G,
+//
+// with G the impulse response (G(0) = 0, G'(0) = 1), Phi11 = G' + 2 sigma G and
+// G1 = integral of G. One set of formulas would lose digits somewhere (near
+// critical damping the over- and underdamped forms divide by ~0; for short
+// times 1 - Phi11 cancels; a slow overdamped root makes 1 - Phi11 tiny), so:
+//
+//   * u max(2 sigma, rho) <= 2: the Taylor series of G from the ODE's
+//     recurrence, valid for every damping ratio (no division by the root
+//     separation);
+//   * otherwise underdamped (sigma < rho): exp(-sigma u) with cos, sin(nu u)/nu;
+//     critically and overdamped: the two decay rates k1 = rho^2/(sigma + mu)
+//     (no cancellation), k2 = sigma + mu, and -expm1(-2 mu u)/(2 mu) for
+//     sinh(mu u)/mu (smooth as mu -> 0); G1 = (1 - Phi11)/rho^2 where Phi11
+//     <= 1/2, else (slow overdamped root) from the rates with
+//     phi1(z) = expm1(z)/z.
+//
+// Each value comes with the magnitude its rounding error is a few ulps of
+// (`mag_*`), for the certified event search.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include <boost/math/special_functions/expm1.hpp>
+
+#include "numeric/sin_cos.hpp"
+
+namespace frictionref::detail {
+
+template <class Work>
+struct Transition {
+  Work g = 0;       // G(u): y per unit initial velocity; v per unit constant forcing
+  Work dg = 1;      // G'(u): v per unit initial velocity
+  Work phi11 = 1;   // y per unit initial position
+  Work g1 = 0;      // integral of G: y per unit constant forcing
+  // Magnitudes: each value's rounding error is a few ulps of these.
+  Work mag_g = 0, mag_dg = 1, mag_phi11 = 1, mag_g1 = 0;
+};
+
+template <class Work>
+class TransitionFunctions {
+ public:
+  // sigma = c / (2 m w) >= 0, rho2 = k / (m w^2) >= 0.
+  TransitionFunctions(const Work& sigma, const Work& rho2) : sigma_(sigma), rho2_(rho2) {
+    using std::sqrt;
+    rho_ = sqrt(rho2);
+    // max(2 sigma, rho) bounds |p| u for both characteristic roots p.
+    rate_ = 2 * sigma > rho_ ? Work(2 * sigma) : rho_;
+    underdamped_ = sigma < rho_;
+    if (underdamped_) {
+      nu_ = sqrt((rho_ - sigma) * (rho_ + sigma));
+    } else {
+      mu_ = sqrt((sigma - rho_) * (sigma + rho_));
+      k1_ = sigma + mu_ > 0 ? Work(rho2 / (sigma + mu_)) : Work(0);
+      k2_ = sigma + mu_;
+    }
+  }
+
+  // Largest |characteristic root|: the time scale of the transient.
+  const Work& rate() const { return rate_; }
+  const Work& sigma() const { return sigma_; }
+  const Work& rho2() const { return rho2_; }
+
+  // At u = tau - tau_a >= 0.
+  Transition<Work> at(const Work& u) const {
+    if (u == 0) return Transition<Work>{};
+    if (u * rate_ <= kSeriesLimit) return series(u);
+    return underdamped_ ? underdamped(u) : overdamped(u);
+  }
+
+ private:
+  static constexpr double kSeriesLimit = 2;
+
+  Transition<Work> series(const Work& u) const {
+    using std::fabs;
+    // G = sum c_n u^n, c_0 = 0, c_1 = 1,
+    // c_{n+2} = -(2 sigma (n+1) c_{n+1} + rho^2 c_n) / ((n+1)(n+2)).
+    // Terms t_n = c_n u^n; |p u| <= 2 makes them fall like 2^n / n!.
+    Transition<Work> t;
+    Work previous = 0;   // t_{n}
+    Work current = u;    // t_{n+1}
+    const Work a = 2 * sigma_ * u;
+    const Work b = rho2_ * u * u;
+    Work g = current, dg = 1, g1 = u * u / 2;   // n = 1 terms
+    Work mag_g = fabs(current), mag_dg = 1, mag_g1 = fabs(g1);
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    for (int n = 0; n < 400; ++n) {
+      // t_{n+2} from t_{n+1}, t_n.
+      const Work next = -(a * Work(n + 1) * current + b * previous) / Work((n + 1) * (n + 2));
+      previous = current;
+      current = next;
+      const int power = n + 2;
+      const Work dterm = Work(power) * current / u;
+      const Work iterm = current * u / Work(power + 1);
+      g += current;
+      dg += dterm;
+      g1 += iterm;
+      mag_g += fabs(current);
+      mag_dg += fabs(dterm);
+      mag_g1 += fabs(iterm);
+      // Two negligible terms in a row: the two-term recurrence has died out
+      // (one alone can be an exact zero, e.g. the even terms when sigma = 0).
+      if (fabs(current) <= eps * mag_g / 64 && fabs(previous) <= eps * mag_g / 64) break;
+    }
+    t.g = g;
+    t.dg = dg;
+    t.phi11 = dg + 2 * sigma_ * g;
+    t.g1 = g1;
+    t.mag_g = mag_g;
+    t.mag_dg = mag_dg;
+    t.mag_phi11 = mag_dg + 2 * sigma_ * mag_g;
+    t.mag_g1 = mag_g1;
+    return t;
+  }
+
+  Transition<Work> underdamped(const Work& u) const {
+    using std::exp;
+    using std::fabs;
+    Transition<Work> t;
+    const Work e = exp(-sigma_ * u);
+    const SinCos<Work> sc = sin_cos(nu_ * u);
+    const Work s = sc.sin / nu_;  // sin(nu u) / nu: relative accuracy kept as nu -> 0
+    t.g = e * s;
+    t.dg = e * (sc.cos - sigma_ * s);
+    t.phi11 = e * (sc.cos + sigma_ * s);
+    t.g1 = (1 - t.phi11) / rho2_;
+    t.mag_g = fabs(t.g) + e * fabs(s);
+    t.mag_dg = e * (fabs(sc.cos) + sigma_ * fabs(s));
+    t.mag_phi11 = t.mag_dg;
+    t.mag_g1 = (1 + t.mag_phi11) / rho2_;
+    return t;
+  }
+
+  Transition<Work> overdamped(const Work& u) const {
+    using boost::math::expm1;
+    using std::exp;
+    using std::fabs;
+    Transition<Work> t;
+    const Work e1 = exp(-k1_ * u);
+    const Work e2 = exp(-k2_ * u);
+    const Work x = 2 * mu_ * u;
+    // sinh(mu u) / mu * exp(-sigma u) = e1 (1 - exp(-2 mu u)) / (2 mu).
+    const Work shape = x > 0 ? Work(-expm1(-x) / x) : Work(1);
+    t.g = e1 * u * shape;
+    const Work even = (e1 + e2) / 2;  // cosh(mu u) exp(-sigma u)
+    t.dg = even - sigma_ * t.g;
+    t.phi11 = even + sigma_ * t.g;
+    t.mag_g = fabs(t.g);
+    t.mag_dg = even + sigma_ * t.mag_g;
+    t.mag_phi11 = t.mag_dg;
+    // (1 - Phi11) / rho^2 unless Phi11 is near 1 with the rates well apart
+    // (a slow overdamped root, or rho = 0).
+    if (rho2_ > 0 && (t.phi11 <= Work(0.5) || x < 1)) {
+      t.g1 = (1 - t.phi11) / rho2_;
+      t.mag_g1 = (1 + t.mag_phi11) / rho2_;
+    } else {
+      // Slow root: G1 = u [phi1(-k1 u) - phi1(-k2 u)] / (k2 - k1), with
+      // (k2 - k1) u = 2 mu u >= 1.
+      const Work p1 = phi1(-k1_ * u);
+      const Work p2 = phi1(-k2_ * u);
+      t.g1 = u * (p1 - p2) / (2 * mu_);
+      t.mag_g1 = u * (fabs(p1) + fabs(p2)) / (2 * mu_);
+    }
+    return t;
+  }
+
+  // expm1(z) / z, 1 at z = 0.
+  static Work phi1(const Work& z) {
+    using boost::math::expm1;
+    return z == 0 ? Work(1) : Work(expm1(z) / z);
+  }
+
+  Work sigma_, rho2_, rho_ = 0, rate_ = 0;
+  bool underdamped_ = false;
+  Work nu_ = 0;           // underdamped: sqrt(rho^2 - sigma^2)
+  Work mu_ = 0;           // overdamped: sqrt(sigma^2 - rho^2)
+  Work k1_ = 0, k2_ = 0;  // decay rates sigma -+ mu
+};
+
+}  // namespace frictionref::detail

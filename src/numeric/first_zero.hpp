@@ -1,0 +1,191 @@
+// The first zero of a smooth function on an interval, found so that none can
+// be missed (docs/theory.md 7.4): the event search of the general phase laws.
+//
+// The function f (s v during a slip, Rs^2 - N^2 during a stick) is known in
+// closed form with its first two derivatives at any point, each with a bound
+// of its rounding error, and the law gives a rigorous bound M of |f'''| over
+// any interval [a, a + h] (from the derivatives of the closed form, not from
+// samples). By Taylor's theorem with the Lagrange remainder, on [a, a + h]
+//
+//   f(a + u) >= f(a) + f'(a) u + f''(a) u^2 / 2 - M u^3 / 6,
+//   f'(a + u) lies within f'(a) + f''(a) u -+ M u^2 / 2,
+//   f''(a + u) lies within f''(a) -+ M u.
+//
+// Each step from a point a where f > 0 proves one of:
+//   * exclusion: the cubic lower bound stays positive on [a, a + h] (its
+//     minimum is at an end or at its one interior local minimum, in closed
+//     form), so f has no zero there;
+//   * monotonicity: f' < 0 (or > 0) throughout, so a sign test at a + h
+//     decides, and a sign change brackets the one zero;
+//   * one extremum: f'' keeps its sign, so f' has at most one zero; it is
+//     found by bracketing and f there decides (a tangential zero is found
+//     here: f reaches 0 at an extremum without changing sign);
+// and otherwise halves h. Steps below the time resolution are sign-tested
+// (the engine resolves nothing shorter). The result is a bracket on which f
+// is decreasing with f(lo) > 0 >= f(hi), for the root solver.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace frictionref::detail {
+
+template <class Work>
+struct Jet {
+  Work f = 0, d1 = 0, d2 = 0;   // f, f', f'' at the point
+  Work e0 = 0, e1 = 0, e2 = 0;  // bounds of their rounding errors
+  Work tail = 0;                // the law's own data for its third-derivative bound
+};
+
+template <class Work>
+struct ZeroBracket {
+  bool found = false;  // false: f > 0 on the whole interval
+  Work lo = 0;         // f(lo) > 0 (or lo = hi: a zero within the resolution of lo)
+  Work hi = 0;         // f(hi) <= 0, f decreasing on [lo, hi]
+};
+
+// Thrown when the search makes no progress (a function at the level of its
+// own rounding noise over a long stretch); the engine reports it as a
+// numerical failure rather than loop.
+struct SearchStalled {};
+
+// Probe concept:
+//   Jet<Work> jet(const Work& tau)                                  one evaluation
+//   Work third_bound(const Work& tau, const Jet<Work>& at, const Work& h)
+//       >= sup |f'''| over [tau, tau + h]
+//   Work derivative(const Work& tau), Work second_derivative(const Work& tau)
+//       (for the extremum's root)
+//   RootResult<Work> decreasing_root(F, DF, lo, hi)                 the scalar type's solver
+template <class Work>
+class FirstZeroSearch {
+ public:
+  // Searches (a, end] from a with f(a) >= 0 (jet `at_a`); zeros within
+  // `blind` of a are not looked for (a slip that starts at rest has f(a) = 0:
+  // its first `blind` is below the resolution). `resolution` is the time
+  // resolution; `max_steps` bounds the work.
+  template <class Probe>
+  static ZeroBracket<Work> run(Probe& probe, const Work& a, const Jet<Work>& at_a, const Work& end,
+                               const Work& blind, const Work& resolution, int max_steps = 100000) {
+    using std::fabs;
+    Work cur = a;
+    Jet<Work> j = at_a;
+    Work h = end - a;
+    int steps = 0;
+    while (cur < end) {
+      if (++steps > max_steps) throw SearchStalled{};
+      if (h > end - cur) h = end - cur;
+      const Work b = h == end - cur ? end : cur + h;
+      const Work u0 = a + blind > cur ? Work(a + blind - cur) : Work(0);
+      const Work m = probe.third_bound(cur, j, h);
+      if (u0 < h && stays_positive(j, m, u0, h)) {
+        cur = b;
+        if (cur < end) j = probe.jet(cur);
+        h *= 2;
+        continue;
+      }
+      if (u0 >= h) {  // all of it below the resolution after the start: sign test
+        const Jet<Work> jb = probe.jet(b);
+        if (!(jb.f > 0)) return {true, cur, b};
+        cur = b;
+        j = jb;
+        continue;
+      }
+      if (slope_below_zero(j, m, h)) {  // f decreasing on [cur, b]
+        const Jet<Work> jb = probe.jet(b);
+        if (!(jb.f > 0)) return {true, cur, b};
+        cur = b;
+        j = jb;
+        continue;
+      }
+      if (slope_above_zero(j, m, h)) {  // f increasing: no zero after f(cur) >= 0
+        cur = b;
+        if (cur < end) j = probe.jet(cur);
+        h *= 2;
+        continue;
+      }
+      if (fabs(j.d2) - j.e2 > m * h) {  // f' monotone: at most one extremum
+        const Jet<Work> jb = probe.jet(b);
+        const bool falls_first = j.d1 < 0;
+        if ((j.d1 < 0) == (jb.d1 < 0)) {  // no extremum inside: f monotone
+          if (falls_first && !(jb.f > 0)) return {true, cur, b};
+        } else {
+          const Work te = extremum(probe, cur, b, falls_first);
+          if (falls_first) {  // minimum at te
+            const Jet<Work> je = probe.jet(te);
+            if (!(je.f > 0)) return {true, cur, te};
+          } else if (!(jb.f > 0)) {  // maximum at te, then falling to b
+            return {true, te, b};
+          }
+        }
+        cur = b;
+        j = jb;
+        continue;
+      }
+      if (h <= resolution) {  // nothing provable at the resolution: sign test
+        const Jet<Work> jb = probe.jet(b);
+        if (!(jb.f > 0)) return {true, cur, b};
+        cur = b;
+        j = jb;
+        continue;
+      }
+      h /= 2;
+    }
+    return {};
+  }
+
+  // min over [u0, u1] of the cubic lower bound of f(a + u) is > 0.
+  static bool stays_positive(const Jet<Work>& j, const Work& m, const Work& u0, const Work& u1) {
+    using std::fabs;
+    using std::sqrt;
+    const Work c0 = j.f - j.e0;
+    const Work c1 = j.d1 - j.e1;
+    const Work c2 = j.d2 - j.e2;
+    const auto p = [&](const Work& u) { return c0 + u * (c1 + u * (c2 / 2 - m * u / 6)); };
+    // Rounding of p itself.
+    const Work margin = 8 * std::numeric_limits<Work>::epsilon() *
+                        (fabs(c0) + fabs(c1) * u1 + fabs(c2) * u1 * u1 / 2 + m * u1 * u1 * u1 / 6);
+    if (!(p(u0) > margin) || !(p(u1) > margin)) return false;
+    // Interior local minimum: the smaller root of p'(u) = c1 + c2 u - m u^2 / 2
+    // (m > 0), or -c1 / c2 when m = 0 and p is convex.
+    Work r;
+    if (m > 0) {
+      const Work disc = c2 * c2 + 2 * m * c1;
+      if (disc < 0) return true;  // p' < 0 throughout: p falls, the ends decide
+      const Work root = sqrt(disc);
+      r = c2 < 0 ? Work((c2 - root) / m) : Work(-2 * c1 / (c2 + root));
+    } else {
+      if (!(c2 > 0)) return true;
+      r = -c1 / c2;
+    }
+    if (!(r > u0 && r < u1)) return true;
+    return p(r) > margin;
+  }
+
+  // f' < 0 on [a, a + h]: its upper bound (convex in u) is < 0 at both ends.
+  static bool slope_below_zero(const Jet<Work>& j, const Work& m, const Work& h) {
+    const Work c1 = j.d1 + j.e1;
+    const Work c2 = j.d2 + j.e2;
+    return c1 < 0 && c1 + h * (c2 + m * h / 2) < 0;
+  }
+
+  // f' > 0 on [a, a + h]: its lower bound (concave in u) is > 0 at both ends.
+  static bool slope_above_zero(const Jet<Work>& j, const Work& m, const Work& h) {
+    const Work c1 = j.d1 - j.e1;
+    const Work c2 = j.d2 - j.e2;
+    return c1 > 0 && c1 + h * (c2 - m * h / 2) > 0;
+  }
+
+ private:
+  // The zero of f' on [lo, hi], where it changes sign once (rising if
+  // f falls first).
+  template <class Probe>
+  static Work extremum(Probe& probe, const Work& lo, const Work& hi, bool falls_first) {
+    const Work s = falls_first ? Work(-1) : Work(1);  // s f' decreasing
+    const auto g = [&](const Work& tau) { return s * probe.derivative(tau); };
+    const auto dg = [&](const Work& tau) { return s * probe.second_derivative(tau); };
+    return probe.decreasing_root(g, dg, lo, hi).root;
+  }
+};
+
+}  // namespace frictionref::detail
