@@ -10,9 +10,18 @@ namespace frictionref::cli {
 std::string number(double value) { return fmt::format("{}", value); }
 
 std::string model_fields(const Model& model) {
-  return fmt::format("mass={} amplitude={} omega={} friction={} lambda={} x0={} v0={} t0={}",
-                     model.mass, model.amplitude, model.omega, model.friction, model.lambda(),
-                     model.x0, model.v0, model.t0);
+  std::string fields = fmt::format("mass={} amplitude={} omega={} friction={} lambda={}",
+                                   model.mass, model.amplitude, model.omega, model.friction,
+                                   model.lambda());
+  // The general model's fields where they differ from their defaults (the
+  // seed's model keeps the line it always had).
+  if (model.static_friction) fields += fmt::format(" static_friction={}", *model.static_friction);
+  if (model.stiffness != 0) fields += fmt::format(" stiffness={}", model.stiffness);
+  if (model.damping != 0) fields += fmt::format(" damping={}", model.damping);
+  if (model.force_offset != 0) fields += fmt::format(" force_offset={}", model.force_offset);
+  for (const Harmonic& h : model.harmonics)
+    fields += fmt::format(" harmonic={},{},{}", h.amplitude, h.omega, h.phase);
+  return fields + fmt::format(" x0={} v0={} t0={}", model.x0, model.v0, model.t0);
 }
 
 namespace {

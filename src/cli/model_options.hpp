@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "cli_error.hpp"
 #include "frictionref/error.hpp"
@@ -54,30 +55,44 @@ decltype(auto) naming_options(const TypedInputs& inputs, F&& f) {
   }
 }
 
-// --mass --amplitude --omega (--friction | --lambda) --x0 --v0 --t0, bound as
-// text. Register once per command with add_to(); the object must outlive parsing.
+// --mass --amplitude --omega (--friction | --lambda) [--static-friction |
+// --static-lambda] --stiffness --damping --force-offset --harmonic B,W[,PHI]...
+// --x0 --v0 --t0, bound as text. Register once per command with add_to(); the
+// object must outlive parsing.
 class ModelOptions {
  public:
   void add_to(CLI::App& command);
 
   // The model, parsed and validated; throws bad input naming the option.
   Model model() const;
-  // The typed model options by library field name (friction -> --lambda if given).
+  // The typed model options by library field name (friction -> --lambda if
+  // given; harmonics[i].amplitude/omega/phase -> the i-th --harmonic).
   TypedInputs typed_inputs() const;
 
  private:
   bool lambda_given() const;
+  bool static_lambda_given() const;
+  // The i-th --harmonic "B,W[,PHI]" as numbers; bad input naming it otherwise.
+  Harmonic harmonic(std::size_t i) const;
 
   std::string mass_ = "1";
   std::string amplitude_ = "1";
   std::string omega_ = "1";
   std::string friction_;
   std::string lambda_;
+  std::string static_friction_;
+  std::string static_lambda_;
+  std::string stiffness_ = "0";
+  std::string damping_ = "0";
+  std::string force_offset_ = "0";
+  std::vector<std::string> harmonics_;
   std::string x0_ = "0";
   std::string v0_ = "0";
   std::string t0_ = "0";
   CLI::Option* friction_option_ = nullptr;
   CLI::Option* lambda_option_ = nullptr;
+  CLI::Option* static_friction_option_ = nullptr;
+  CLI::Option* static_lambda_option_ = nullptr;
 };
 
 }  // namespace frictionref::cli
