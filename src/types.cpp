@@ -1,26 +1,11 @@
 #include "frictionref/types.hpp"
 
-#include <array>
-#include <utility>
+#include "enum_names.hpp"
 
 namespace frictionref {
 namespace {
 
-template <class Enum, std::size_t N>
-std::optional<Enum> lookup(const std::array<std::pair<Enum, std::string_view>, N>& table,
-                           std::string_view text) {
-  for (const auto& [value, name] : table)
-    if (name == text) return value;
-  return std::nullopt;
-}
-
-template <class Enum, std::size_t N>
-std::string_view name_of(const std::array<std::pair<Enum, std::string_view>, N>& table,
-                         Enum value) {
-  for (const auto& [v, name] : table)
-    if (v == value) return name;
-  return "unknown";
-}
+using detail::name_of;
 
 constexpr std::array<std::pair<PhaseKind, std::string_view>, 3> kPhaseNames{{
     {PhaseKind::stick, "stick"},
@@ -32,10 +17,11 @@ constexpr std::array<std::pair<Termination, std::string_view>, 3> kTerminationNa
     {Termination::phase_limit, "phase_limit"},
     {Termination::numerical_failure, "numerical_failure"},
 }};
-constexpr std::array<std::pair<Regime, std::string_view>, 3> kRegimeNames{{
+constexpr std::array<std::pair<Regime, std::string_view>, 4> kRegimeNames{{
     {Regime::continuous, "continuous"},
     {Regime::dead_bands, "dead-bands"},
     {Regime::stops, "stops"},
+    {Regime::aperiodic, "aperiodic"},
 }};
 
 }  // namespace
@@ -47,13 +33,13 @@ std::string_view to_string(Termination termination) {
 std::string_view to_string(Regime regime) { return name_of(kRegimeNames, regime); }
 
 std::optional<PhaseKind> phase_kind_from_string(std::string_view text) {
-  return lookup(kPhaseNames, text);
+  return detail::enum_from_name(kPhaseNames, text);
 }
 std::optional<Termination> termination_from_string(std::string_view text) {
-  return lookup(kTerminationNames, text);
+  return detail::enum_from_name(kTerminationNames, text);
 }
 std::optional<Regime> regime_from_string(std::string_view text) {
-  return lookup(kRegimeNames, text);
+  return detail::enum_from_name(kRegimeNames, text);
 }
 
 }  // namespace frictionref

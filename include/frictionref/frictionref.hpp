@@ -1,7 +1,9 @@
 // Everything public in one include.
 #pragma once
 
+#include "frictionref/classification.hpp"
 #include "frictionref/comparison.hpp"
+#include "frictionref/den_hartog.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"

@@ -23,18 +23,21 @@ enum class Termination {
   numerical_failure,  // a root bracket was lost (an internal invariant; please report)
 };
 
-// Steady-state behaviour of the harmonically forced Coulomb oscillator.
+// Steady-state behaviour. For the seed's model it follows from lambda = R / B
+// alone (steady_state.hpp); for any model, from a closed form or a simulation
+// (classification.hpp).
 enum class Regime {
-  continuous,  // lambda < lambda*: slides for ever, reversals without stops
-  dead_bands,  // lambda* <= lambda < 1: two stops (dead bands) per forcing period
-  stops,       // lambda >= 1: no motion after the initial transient
+  continuous,  // moves throughout: reversals without stops (seed: lambda < lambda*)
+  dead_bands,  // sticks of non-zero duration in every repetition (seed: lambda* <= lambda < 1)
+  stops,       // at rest after the transient (seed: lambda >= 1)
+  aperiodic,   // moving, but no repetition found within the simulated periods
 };
 
 // "stick", "slip+", "slip-"
 std::string_view to_string(PhaseKind kind);
 // "reached_end", "phase_limit", "numerical_failure"
 std::string_view to_string(Termination termination);
-// "continuous", "dead-bands", "stops"
+// "continuous", "dead-bands", "stops", "aperiodic"
 std::string_view to_string(Regime regime);
 
 std::optional<PhaseKind> phase_kind_from_string(std::string_view text);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "engine/scalar_traits.hpp"
+#include "frictionref/detail/number_text.hpp"
 #include "frictionref/error.hpp"
 
 namespace frictionref {
@@ -51,6 +52,23 @@ Regime regime_for(double lambda) {
 
 SteadyState steady_state(const Model& model) {
   model.validate();
+  {
+    // The closed forms below are the seed's model's only (classify() takes any model).
+    const char* rule = "must be 0 for the seed's closed-form steady state (classify() takes "
+                       "every model)";
+    if (model.stiffness != 0) throw InvalidInput("stiffness", detail::shortest_text(model.stiffness), rule);
+    if (model.damping != 0) throw InvalidInput("damping", detail::shortest_text(model.damping), rule);
+    if (model.force_offset != 0)
+      throw InvalidInput("force_offset", detail::shortest_text(model.force_offset), rule);
+    if (!model.harmonics.empty())
+      throw InvalidInput("harmonics", std::to_string(model.harmonics.size()) + " terms",
+                         "must be empty for the seed's closed-form steady state (classify() "
+                         "takes every model)");
+    if (model.static_limit() != model.friction)
+      throw InvalidInput("static_friction", detail::shortest_text(model.static_limit()),
+                         "must equal the sliding friction for the seed's closed-form steady "
+                         "state (classify() takes every model)");
+  }
   if (!(model.amplitude > 0)) {
     std::ostringstream value;
     value << model.amplitude;
@@ -104,6 +122,7 @@ SteadyState steady_state(const Model& model) {
       s.energy_per_period = static_cast<double>(R * 2 * slide * length_unit);
       break;
     }
+    case Regime::aperiodic:  // not a regime of the seed's closed form
     case Regime::stops:
       s.stops_per_period = 0;
       s.stuck_fraction = 1;
