@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "atomic_output.hpp"
 #include "command.hpp"
@@ -15,9 +16,11 @@
 namespace frictionref::cli {
 namespace {
 
-struct ClassifyOptions {
+struct ClassifyCommandOptions {
   ModelOptions model;
   bool json = false;
+  bool simulate = false;
+  std::string max_periods = "400";
 };
 
 // NaN marks a figure that does not apply to the regime: JSON null.
@@ -34,11 +37,25 @@ std::string text_value(const nlohmann::ordered_json& value) {
   return value.dump();
 }
 
-void run_classify(const ClassifyOptions& options, const Invocation&) {
+void run_classify(const ClassifyCommandOptions& options, const Invocation&) {
   const Model model = options.model.model();
-  const SteadyState steady =
-      naming_options(options.model.typed_inputs(), [&] { return steady_state(model); });
-  const nlohmann::ordered_json json = classify_json(model, steady);
+  ClassifyOptions classify_options;
+  classify_options.closed_forms = !options.simulate;
+  const double periods = parse_number({"--max-periods", options.max_periods});
+  if (!(periods >= 2 && periods <= 1e6 && periods == std::floor(periods)))
+    throw bad_input(fmt::format("--max-periods = {}: must be a whole number from 2 to 1000000",
+                                options.max_periods));
+  classify_options.max_periods = static_cast<std::uint64_t>(periods);
+  TypedInputs typed = options.model.typed_inputs();
+  const Classification classification = naming_options(typed, [&] {
+    try {
+      return classify(model, classify_options);
+    } catch (const std::runtime_error& error) {
+      if (dynamic_cast<const InvalidInput*>(&error)) throw;
+      throw internal_error(error.what());
+    }
+  });
+  const nlohmann::ordered_json json = classify_json(model, classification);
 
   AtomicOutput out(std::nullopt, "");
   if (options.json) {
@@ -47,6 +64,9 @@ void run_classify(const ClassifyOptions& options, const Invocation&) {
     for (const auto& [key, value] : json.items()) {
       if (key == "model") {
         fmt::print(out.stream(), "model: {}\n", model_fields(model));
+      } else if (key == "den_hartog" && value.is_object()) {
+        for (const auto& [name, field] : value.items())
+          fmt::print(out.stream(), "den_hartog.{}: {}\n", name, text_value(field));
       } else {
         fmt::print(out.stream(), "{}: {}\n", key, text_value(value));
       }
@@ -57,9 +77,33 @@ void run_classify(const ClassifyOptions& options, const Invocation&) {
 
 }  // namespace
 
+nlohmann::ordered_json model_json(const Model& model) {
+  nlohmann::ordered_json json = {{"mass", model.mass},
+                                 {"amplitude", model.amplitude},
+                                 {"omega", model.omega},
+                                 {"friction", model.friction},
+                                 {"lambda", model.lambda()}};
+  if (model.static_friction) {
+    json["static_friction"] = *model.static_friction;
+  } else {
+    json["static_friction"] = nullptr;
+  }
+  json["stiffness"] = model.stiffness;
+  json["damping"] = model.damping;
+  json["force_offset"] = model.force_offset;
+  json["harmonics"] = nlohmann::ordered_json::array();
+  for (const Harmonic& h : model.harmonics)
+    json["harmonics"].push_back({h.amplitude, h.omega, h.phase});
+  json["x0"] = model.x0;
+  json["v0"] = model.v0;
+  json["t0"] = model.t0;
+  return json;
+}
+
 nlohmann::ordered_json classify_json(const Model& model, const SteadyState& steady) {
   nlohmann::ordered_json json;
   json["regime"] = std::string(to_string(steady.regime));
+  json["method"] = std::string(to_string(ClassificationMethod::closed_form));
   json["lambda"] = value_or_null(steady.lambda);
   json["threshold"] = value_or_null(steady.threshold);
   json["threshold_quoted"] = value_or_null(steady.threshold_quoted);
@@ -72,34 +116,74 @@ nlohmann::ordered_json classify_json(const Model& model, const SteadyState& stea
   json["slide_per_half_period"] = value_or_null(steady.slide_per_half_period);
   json["peak_velocity"] = value_or_null(steady.peak_velocity);
   json["energy_per_period"] = value_or_null(steady.energy_per_period);
-  json["model"] = {{"mass", model.mass},       {"amplitude", model.amplitude},
-                   {"omega", model.omega},     {"friction", model.friction},
-                   {"lambda", model.lambda()}, {"x0", model.x0},
-                   {"v0", model.v0},           {"t0", model.t0}};
+  json["model"] = model_json(model);
+  json["version"] = version;
+  return json;
+}
+
+nlohmann::ordered_json classify_json(const Model& model, const Classification& c) {
+  if (c.seed && c.method == ClassificationMethod::closed_form) return classify_json(model, *c.seed);
+  nlohmann::ordered_json json;
+  json["regime"] = std::string(to_string(c.regime));
+  json["method"] = std::string(to_string(c.method));
+  json["forcing_period"] = value_or_null(c.forcing_period);
+  json["multiplicity"] = c.multiplicity;
+  json["transient_periods"] = c.transient_periods;
+  json["stops_per_period"] = value_or_null(c.stops_per_period);
+  json["reversals_per_period"] = value_or_null(c.reversals_per_period);
+  json["stuck_fraction"] = value_or_null(c.stuck_fraction);
+  json["drift_per_period"] = value_or_null(c.drift_per_period);
+  json["peak_velocity"] = value_or_null(c.peak_velocity);
+  if (c.den_hartog) {
+    const DenHartogSolution& d = *c.den_hartog;
+    json["den_hartog"] = {{"non_stop", d.non_stop},
+                          {"stable", d.stable},
+                          {"failed", d.failed},
+                          {"frequency_ratio", value_or_null(d.frequency_ratio)},
+                          {"amplitude", value_or_null(d.amplitude)},
+                          {"reversal_phase", value_or_null(d.reversal_phase)},
+                          {"peak_velocity", value_or_null(d.peak_velocity)},
+                          {"growth", value_or_null(d.growth)}};
+  } else {
+    json["den_hartog"] = nullptr;
+  }
+  json["model"] = model_json(model);
   json["version"] = version;
   return json;
 }
 
 Command add_classify_command(CLI::App& app) {
-  auto options = std::make_shared<ClassifyOptions>();
+  auto options = std::make_shared<ClassifyCommandOptions>();
   CLI::App* command = app.add_subcommand(
-      "classify", "Steady-state regime for lambda = R / B, with its closed-form figures");
+      "classify", "Steady state of the motion: regime, stops per period, method and figures");
   options->model.add_to(*command);
   command->add_flag("--json", options->json, "print one JSON object instead of name: value lines");
+  command->add_flag("--simulate", options->simulate,
+                    "simulate even where a closed form holds (a cross-check)");
+  numeric(command->add_option("--max-periods", options->max_periods,
+                              "forcing periods simulated at most before giving up on a "
+                              "repeating motion; 2..1000000"))
+      ->type_name("N")
+      ->capture_default_str();
   command->footer(
-      "Computes the regime: 'continuous' if lambda < lambda* = 2 / sqrt(4 + pi^2) = 0.5370293\n"
-      "(no dead bands), 'dead-bands' if lambda* <= lambda < 1 (two stops per forcing period),\n"
-      "'stops' if lambda >= 1 (at rest after the transient); also what the seed's quoted\n"
-      "threshold 0.536 would say. Needs B > 0; x0, v0 and t0 do not matter.\n"
-      "Output: 'name: value' lines, or with --json an object with the keys regime, lambda,\n"
-      "threshold, threshold_quoted, regime_by_quoted_threshold, reversal_phase, breakaway_phase,\n"
-      "stop_phase (forcing phases w t mod 2 pi [rad]), stops_per_period, stuck_fraction,\n"
-      "slide_per_half_period [length], peak_velocity [length/time], energy_per_period [energy],\n"
-      "model and version; figures that do not apply to the regime are null ('n/a' in text).\n"
+      "Regimes: 'continuous' (moves throughout, reversals without stops), 'dead-bands' (sticks\n"
+      "of non-zero duration in the steady motion), 'stops' (at rest after the transient),\n"
+      "'aperiodic' (moving, no repetition found within --max-periods).\n"
+      "method 'closed-form': the seed's model (m x'' = B sin(w t) - R sign v; the regime follows\n"
+      "from lambda = R/B against lambda* = 2 / sqrt(4 + pi^2) = 0.5370293, also what the seed's\n"
+      "quoted 0.536 would say; needs B > 0, x0, v0, t0 do not matter), or Den Hartog's non-stop\n"
+      "solution (spring, no damper, one harmonic) where it exists and is stable.\n"
+      "method 'simulation': every other model, with the exact engine from (x0, v0, t0), period\n"
+      "after period of the forcing until the motion repeats (multiplicity p periods); the last\n"
+      "p periods are measured. Stops count sticks of non-zero duration, not direct reversals.\n"
+      "Output: 'name: value' lines, or --json (keys in docs/cli.md); figures that do not\n"
+      "apply are null ('n/a' in text).\n"
       "Exit codes: 0 ok, 2 bad input (one line on stderr).\n"
       "Examples:\n"
       "  frictionref classify --lambda 0.7\n"
-      "  frictionref classify --amplitude 2 --friction 1.2 --json");
+      "  frictionref classify --amplitude 2 --friction 1.2 --json\n"
+      "  frictionref classify --lambda 0.3 --stiffness 1 --omega 2\n"
+      "  frictionref classify --lambda 0.4 --static-lambda 0.6 --stiffness 1 --damping 0.1");
   return {command, [options](const Invocation& invocation) {
             run_classify(*options, invocation);
             return exit_success;

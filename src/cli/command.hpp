@@ -49,5 +49,6 @@ Command add_stiff_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 Command add_convergence_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
+Command add_map_command(CLI::App& app);
 
 }  // namespace frictionref::cli

@@ -69,6 +69,15 @@ void write_data(const Figure& figure, const std::string& path) {
   std::FILE* out = std::fopen(path.c_str(), "w");
   if (!out) throw bad_input("cannot write gnuplot's data file");
   for (const Panel& panel : figure.panels) {
+    const HeatMap& map = panel.heat_map;
+    if (!map.z.empty()) {  // one scan line per x, the block gnuplot's "with image" reads
+      for (std::size_t i = 0; i < map.x.size(); ++i) {
+        for (std::size_t j = 0; j < map.y.size(); ++j)
+          std::fprintf(out, "%.17g %.17g %.17g\n", map.x[i], map.y[j], map.z[i * map.y.size() + j]);
+        std::fprintf(out, "\n");
+      }
+      std::fprintf(out, "\n");
+    }
     for (const Series& series : panel.series) {
       for (std::size_t i = 0; i < series.x.size() && i < series.y.size(); ++i)
         std::fprintf(out, "%.17g %.17g\n", series.x[i], series.y[i]);
@@ -112,6 +121,11 @@ std::string script(const Figure& figure, const std::string& data, const std::str
                        "lc rgb '#555555'\n",  // front: not hidden under a curve drawn there
                        x, x);
     std::string plots;
+    if (!panel.heat_map.z.empty()) {
+      s += "set cblabel " + quoted(panel.heat_map.z_label) +
+           "\nset palette rgb 33,13,10\nset autoscale xfix\nset autoscale yfix\n";
+      plots = fmt::format("{} index {} using 1:2:3 with image notitle", quoted(data), block++);
+    }
     int colour = 0;
     for (const Series& series : panel.series) {
       std::string style;

@@ -20,6 +20,13 @@ struct Series {
   bool markers = false;      // a line with a marker at every point (sparse data)
 };
 
+// Values on a regular grid, drawn as coloured pixels under the series (a
+// parameter map): z[i * y.size() + j] belongs to (x[i], y[j]).
+struct HeatMap {
+  std::vector<double> x, y, z;
+  std::string z_label;  // the colour bar's label, with units
+};
+
 struct Panel {
   std::string title;
   std::string x_label;  // with units, e.g. "t [time]"
@@ -27,6 +34,7 @@ struct Panel {
   std::vector<Series> series;
   bool log_x = false, log_y = false;
   std::vector<double> vertical_lines;  // drawn dashed, e.g. lambda* on a sweep
+  HeatMap heat_map;                    // drawn first when it has values
 };
 
 inline Panel make_panel(std::string title, std::string x_label, std::string y_label,

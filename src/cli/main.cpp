@@ -81,7 +81,7 @@ int run(int argc, char** argv) {
   const std::vector<Command> commands{
       add_events_command(app),  add_curve_command(app),   add_reproduce_command(app),
       add_classify_command(app), add_stiff_command(app),  add_compare_command(app),
-      add_convergence_command(app), add_sweep_command(app)};
+      add_convergence_command(app), add_sweep_command(app),     add_map_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& help_or_version) {

@@ -37,7 +37,8 @@ CliError to_bad_input(const InvalidInput& error, const TypedInputs& inputs) {
       fmt::format("{} = {}: {}", typed->second.option, typed->second.text, error.rule()));
 }
 
-void ModelOptions::add_to(CLI::App& command) {
+void ModelOptions::add_to(CLI::App& command, bool friction_required) {
+  friction_required_ = friction_required;
   const char* group = "Model (any consistent units; force = mass * length / time^2)";
   const auto add = [&](const char* name, std::string& text, const char* help, const char* type) {
     return numeric(command.add_option(name, text, help))->type_name(type)->group(group);
@@ -120,8 +121,8 @@ TypedInputs ModelOptions::typed_inputs() const {
       {"omega", {"--omega", omega_}}, {"x0", {"--x0", x0_}},
       {"v0", {"--v0", v0_}},          {"t0", {"--t0", t0_}},
   };
-  inputs["friction"] =
-      lambda_given() ? TypedNumber{"--lambda", lambda_} : TypedNumber{"--friction", friction_};
+  inputs["friction"] = lambda_given() ? TypedNumber{"--lambda", lambda_}
+                                      : TypedNumber{"--friction", friction_.empty() ? "0" : friction_};
   if (static_lambda_given()) {
     inputs["static_friction"] = {"--static-lambda", static_lambda_};
   } else if (static_friction_option_ && static_friction_option_->count() > 0) {
@@ -143,7 +144,8 @@ Model ModelOptions::model() const {
   // option group, whose help text is much harder to read.
   const bool friction_given = friction_option_ && friction_option_->count() > 0;
   if (!friction_given && !lambda_given()) {
-    throw bad_input("--friction/--lambda: exactly one is required (R = lambda * B)");
+    if (friction_required_)
+      throw bad_input("--friction/--lambda: exactly one is required (R = lambda * B)");
   }
   const TypedInputs inputs = typed_inputs();
   Model model;

@@ -61,7 +61,9 @@ decltype(auto) naming_options(const TypedInputs& inputs, F&& f) {
 // object must outlive parsing.
 class ModelOptions {
  public:
-  void add_to(CLI::App& command);
+  // friction_required = false: neither --friction nor --lambda means R = 0
+  // (for commands where an axis or sweep sets the friction).
+  void add_to(CLI::App& command, bool friction_required = true);
 
   // The model, parsed and validated; throws bad input naming the option.
   Model model() const;
@@ -93,6 +95,7 @@ class ModelOptions {
   CLI::Option* lambda_option_ = nullptr;
   CLI::Option* static_friction_option_ = nullptr;
   CLI::Option* static_lambda_option_ = nullptr;
+  bool friction_required_ = true;
 };
 
 }  // namespace frictionref::cli

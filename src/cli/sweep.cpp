@@ -5,7 +5,6 @@
 #include "frictionref/sweep.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -24,6 +23,7 @@
 #include "frictionref/steady_state.hpp"
 #include "frictionref/version.hpp"
 #include "model_options.hpp"
+#include "progress_line.hpp"
 
 namespace frictionref::cli {
 namespace {
@@ -76,55 +76,6 @@ std::uint64_t whole_number(const TypedNumber& typed, double max, const char* max
     throw bad_input(fmt::format("{} = {}: must be <= {}", typed.option, typed.text, max_text));
   return static_cast<std::uint64_t>(value);
 }
-
-// "frictionref sweep: 41234/100000 lambdas (41%), 4 s so far, about 6 s left", rewritten in
-// place on a terminal, and only once the run has taken longer than the delay
-// (1 s; FRICTIONREF_PROGRESS_DELAY seconds if set, for tests). Never written
-// to a file or pipe. The line is blanked out when the sweep ends, or when an
-// error unwinds past it.
-class ProgressLine {
- public:
-  ProgressLine() : start_(Clock::now()), enabled_(isatty(STDERR_FILENO) == 1) {
-    if (const char* delay = std::getenv("FRICTIONREF_PROGRESS_DELAY")) {
-      char* end = nullptr;
-      const double seconds = std::strtod(delay, &end);
-      if (end != delay && seconds >= 0) delay_ = seconds;
-    }
-  }
-  ~ProgressLine() { clear(); }
-  ProgressLine(const ProgressLine&) = delete;
-  ProgressLine& operator=(const ProgressLine&) = delete;
-
-  void update(std::size_t done, std::size_t total) {
-    if (!enabled_ || done >= total) return;
-    const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
-    if (elapsed < delay_) return;
-    std::string line = fmt::format("frictionref sweep: {}/{} lambdas ({}%), {:.0f} s so far", done,
-                                   total, done * 100 / total, elapsed);
-    if (done > 0)
-      line += fmt::format(", about {:.0f} s left",
-                          elapsed * static_cast<double>(total - done) / static_cast<double>(done));
-    const std::size_t width = line.size();
-    if (line.size() < shown_) line.append(shown_ - line.size(), ' ');
-    fmt::print(stderr, "\r{}", line);
-    std::fflush(stderr);
-    shown_ = width;
-  }
-
-  void clear() {
-    if (shown_ == 0) return;
-    fmt::print(stderr, "\r{}\r", std::string(shown_, ' '));
-    std::fflush(stderr);
-    shown_ = 0;
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  Clock::time_point start_;
-  bool enabled_;
-  double delay_ = 1.0;
-  std::size_t shown_ = 0;  // length of the line on screen, 0 if none
-};
 
 void write_table(std::FILE* out, const std::vector<SweepPoint>& points, const SweepOptions& options,
                  const std::string& command) {
@@ -262,7 +213,7 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
   AtomicOutput out(typed.output.path(), "-o");  // a bad -o fails now, not after the run
   std::vector<SweepPoint> results;
   {
-    ProgressLine progress;
+    ProgressLine progress("sweep", "lambdas");
     results = naming_options(inputs, [&] {
       return sweep(lambdas, options,
                    [&progress](std::size_t done, std::size_t all) { progress.update(done, all); });

@@ -34,6 +34,10 @@ struct MotionLimits {
 template <class Real>
 struct ScalarTraits : MotionLimits {
   using Work = Real;
+  // The general laws polish event times by certified Halley steps first
+  // (halley_polish.hpp); false: by the bracketing solver alone (the 50-digit
+  // engine keeps Boost.Math TOMS 748 as its one root finder).
+  static constexpr bool halley_polish = false;
 
   // Phases shorter than this (8 ulps of the output type at the time scale
   // max(1, |tau|), tau = w t) cannot be told apart from zero length in the
@@ -58,6 +62,7 @@ struct ScalarTraits : MotionLimits {
 template <>
 struct ScalarTraits<double> : MotionLimits {
   using Work = long double;
+  static constexpr bool halley_polish = true;
 
   static Work time_resolution(const Work& tau) {
     const Work scale = std::fabs(tau) > 1 ? std::fabs(tau) : Work(1);

@@ -42,7 +42,9 @@ template <class Work>
 struct ZeroBracket {
   bool found = false;  // false: f > 0 on the whole interval
   Work lo = 0;         // f(lo) > 0 (or lo = hi: a zero within the resolution of lo)
-  Work hi = 0;         // f(hi) <= 0, f decreasing on [lo, hi]
+  Work hi = 0;         // f(hi) <= 0, f decreasing on [lo, hi]; or, after a step at the
+                       // resolution, f(hi) within its rounding error of 0
+  Jet<Work> at_lo, at_hi;  // the jets there, for the root solver's first guess
 };
 
 // Thrown when the search makes no progress (a function at the level of its
@@ -70,30 +72,40 @@ class FirstZeroSearch {
     using std::fabs;
     Work cur = a;
     Jet<Work> j = at_a;
-    Work h = end - a;
     int steps = 0;
+    if (blind > 0) {  // no zero is looked for before a + blind: start there
+      const Work b = a + blind < end ? Work(a + blind) : end;
+      const Jet<Work> jb = probe.jet(b);
+      if (!(jb.f > 0)) return {true, a, b, j, jb};
+      cur = b;
+      j = jb;
+    }
+    // A first step where the cubic term of the Taylor bound is comparable to
+    // the value (halving from the whole interval would cost a dozen tries).
+    Work h = end - cur;
+    {
+      using std::cbrt;
+      const Work m = probe.third_bound(cur, j, h);
+      const Work scale = fabs(j.f) + fabs(j.d1) + fabs(j.d2);
+      if (m > 0 && scale > 0) {
+        const Work guess = 2 * cbrt(6 * scale / m);
+        if (guess < h) h = guess;
+      }
+    }
     while (cur < end) {
       if (++steps > max_steps) throw SearchStalled{};
       if (h > end - cur) h = end - cur;
       const Work b = h == end - cur ? end : cur + h;
-      const Work u0 = a + blind > cur ? Work(a + blind - cur) : Work(0);
       const Work m = probe.third_bound(cur, j, h);
-      if (u0 < h && stays_positive(j, m, u0, h)) {
+      if (stays_positive(j, m, Work(0), h)) {
         cur = b;
         if (cur < end) j = probe.jet(cur);
         h *= 2;
         continue;
       }
-      if (u0 >= h) {  // all of it below the resolution after the start: sign test
-        const Jet<Work> jb = probe.jet(b);
-        if (!(jb.f > 0)) return {true, cur, b};
-        cur = b;
-        j = jb;
-        continue;
-      }
       if (slope_below_zero(j, m, h)) {  // f decreasing on [cur, b]
         const Jet<Work> jb = probe.jet(b);
-        if (!(jb.f > 0)) return {true, cur, b};
+        if (!(jb.f > 0)) return {true, cur, b, j, jb};
         cur = b;
         j = jb;
         continue;
@@ -108,23 +120,27 @@ class FirstZeroSearch {
         const Jet<Work> jb = probe.jet(b);
         const bool falls_first = j.d1 < 0;
         if ((j.d1 < 0) == (jb.d1 < 0)) {  // no extremum inside: f monotone
-          if (falls_first && !(jb.f > 0)) return {true, cur, b};
+          if (falls_first && !(jb.f > 0)) return {true, cur, b, j, jb};
         } else {
           const Work te = extremum(probe, cur, b, falls_first);
+          const Jet<Work> je = probe.jet(te);
           if (falls_first) {  // minimum at te
-            const Jet<Work> je = probe.jet(te);
-            if (!(je.f > 0)) return {true, cur, te};
+            if (!(je.f > 0)) return {true, cur, te, j, je};
           } else if (!(jb.f > 0)) {  // maximum at te, then falling to b
-            return {true, te, b};
+            return {true, te, b, je, jb};
           }
         }
         cur = b;
         j = jb;
         continue;
       }
-      if (h <= resolution) {  // nothing provable at the resolution: sign test
+      if (h <= resolution) {
+        // Nothing provable at the resolution: a sign test, where a value
+        // within its rounding error of zero counts as zero (f hovering at
+        // the level of its noise near a tangency would otherwise be crossed
+        // a resolution at a time). The bracket's hi may then have f > 0.
         const Jet<Work> jb = probe.jet(b);
-        if (!(jb.f > 0)) return {true, cur, b};
+        if (!(jb.f > jb.e0)) return {true, cur, b, j, jb};
         cur = b;
         j = jb;
         continue;

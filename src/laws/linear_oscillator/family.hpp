@@ -19,6 +19,7 @@
 #include "laws/linear_oscillator/oscillator.hpp"
 #include "laws/linear_oscillator/slip_law.hpp"
 #include "numeric/first_zero.hpp"
+#include "numeric/halley_polish.hpp"
 
 namespace frictionref::detail {
 
@@ -65,6 +66,13 @@ class LinearOscillatorFamily {
 
  private:
   int at_rest(const Work& tau, const Work& y, bool& merged) const;
+  // The zero of a decreasing f in a bracket of the event search: certified
+  // Halley steps where the scalar type polishes that way, else (or if they
+  // do not settle) the scalar type's bracketing solver. `third` bounds
+  // |f'''| on the bracket.
+  template <class JetAt, class F, class DF>
+  Work root_in(const ZeroBracket<Work>& bracket, const JetAt& jet_at, const Work& third,
+               const F& f, const DF& df);
 
   // The event-search probe on a closed form: `Law` gives jets and bounds.
   template <class Evaluate, class Bound>
@@ -125,6 +133,24 @@ int LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y, bool& 
 }
 
 template <class Real>
+template <class JetAt, class F, class DF>
+auto LinearOscillatorFamily<Real>::root_in(const ZeroBracket<Work>& bracket, const JetAt& jet_at,
+                                           const Work& third, const F& f, const DF& df) -> Work {
+  // A bracket closed by a sign test at the resolution may end where f is
+  // within rounding of zero but positive: the zero is there.
+  if (bracket.at_hi.f > 0) return bracket.hi;
+  if (!(bracket.at_lo.f > 0)) return bracket.lo;
+  if constexpr (Traits::halley_polish) {
+    if (const auto root = halley_polish(jet_at, bracket.lo, bracket.hi, secant_guess(bracket),
+                                        third, summary_->root_function_calls))
+      return *root;
+  }
+  return checked(Traits::decreasing_root(f, df, bracket.lo, bracket.hi,
+                                         summary_->root_function_calls))
+      .root;
+}
+
+template <class Real>
 Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real>::stick_end(
     const Work& tau, const Work& x) {
   using std::fabs;
@@ -135,67 +161,107 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
     // n is constant: the at-rest rule already decided; it holds for ever.
     return result;
   }
-  const auto jet_at = [&net](const Work& t) { return net.jet(net.point(t)); };
-  auto search = probe(jet_at, [&net](const Work&, const Jet<Work>&, const Work&) {
+  // The search runs on f + E, E a bound of f's rounding error over the stick:
+  // the mass breaks away only where |N| exceeds Rs by more than rounding (at
+  // the time |N| crossed Rs); a tangency of |N| to Rs within rounding, as at
+  // R = B with a spring, leaves it at rest (|N| <= Rs).
+  const Work margin = 2 * net.value_error_bound(fabs(tau) > fabs(tau_end_) ? fabs(tau) : fabs(tau_end_));
+  // |n| can never exceed rs by more than rounding: at rest for good.
+  if (net.magnitude_bound() * (1 + 64 * std::numeric_limits<Work>::epsilon()) <= o_.rs() &&
+      (o_.rs() - net.magnitude_bound()) * (o_.rs() + net.magnitude_bound()) + margin > 0)
+    return result;
+  const auto shifted = [&net, margin](const Work& t) {
+    Jet<Work> j = net.jet(net.point(t));
+    j.f += margin;
+    return j;
+  };
+  auto search = probe(shifted, [&net](const Work&, const Jet<Work>&, const Work&) {
     return net.third_bound();
   });
-  Work from = tau;
-  for (int tangencies = 0;; ++tangencies) {
-    const Work res = Traits::time_resolution(from);
-    if (!(from < tau_end_)) return result;
-    if (tangencies > 64) throw SearchStalled{};
-    const ZeroBracket<Work> bracket =
-        Search::run(search, from, search.jet(from), tau_end_, res, res);
-    if (!bracket.found) return result;
-    const auto f = [&net](const Work& t) {
-      const auto p = net.point(t);
-      return (net.jet(p)).f;
-    };
-    const auto df = [&net](const Work& t) { return net.jet(net.point(t)).d1; };
-    const Work root = checked(Traits::decreasing_root(f, df, bracket.lo, bracket.hi,
-                                                      summary_->root_function_calls))
-                          .root;
-    const Jet<Work> at = search.jet(root);
-    // A crossing (f falls through zero) is a breakaway; a tangency (|N|
-    // touches Rs) is one only if |N| exceeds Rs just after.
-    bool breaks = at.d1 < -at.e1;
-    if (!breaks) {
-      const Work after = root + Traits::time_resolution(root);
-      breaks = after < tau_end_ && search.jet(after).f < 0;
+  const Work res = Traits::time_resolution(tau);
+  const ZeroBracket<Work> bracket = Search::run(search, tau, search.jet(tau), tau_end_, res, res);
+  if (!bracket.found) return result;
+  struct Cached {
+    Work tau = std::numeric_limits<Work>::quiet_NaN();
+    Jet<Work> jet;
+  } cache;
+  const auto at = [&net, &cache](const Work& t) -> const Jet<Work>& {
+    if (!(t == cache.tau)) {
+      cache.jet = net.jet(net.point(t));
+      cache.tau = t;
     }
-    if (breaks) {
-      result.found = root < tau_end_;
-      result.tau = root;
-      const Work n = net.point(root).n;
-      result.direction = n > 0 ? 1 : -1;
-      return result;
-    }
-    from = root + Traits::time_resolution(root);
+    return cache.jet;
+  };
+  const auto f = [&at](const Work& t) { return at(t).f; };
+  const auto df = [&at](const Work& t) { return at(t).d1; };
+  // The crossing of f = 0 (not f + margin) inside the bracket.
+  ZeroBracket<Work> crossing = bracket;
+  crossing.at_lo.f -= margin;
+  crossing.at_hi.f -= margin;
+  const auto jet_unshifted = [&at](const Work& t) { return at(t); };
+  Work root;
+  if (!(crossing.at_lo.f > 0)) {
+    root = crossing.lo;  // |N| reached Rs within rounding before the certain excess
+  } else {
+    root = root_in(crossing, jet_unshifted, net.third_bound(), f, df);
   }
+  result.found = root < tau_end_;
+  result.tau = root;
+  const Work n = net.point(bracket.hi).n;
+  result.direction = n > 0 ? 1 : -1;
+  return result;
 }
 
 template <class Real>
 SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real>::slip_end(
     const PhaseStart<Work>& start) {
+  using std::fabs;
+  using std::sqrt;
   const Work omega = o_.omega();
   const LinearSlipLaw<Work> law(o_, start.sign, start.tau, omega * start.x, start.v);
   const auto jet_at = [&law](const Work& t) { return law.jet(law.point(t)); };
   auto search = probe(jet_at, [&law](const Work& t, const Jet<Work>& at, const Work& h) {
     return law.third_bound(t, at, h);
   });
+  const Work s(start.sign);
+  // The root solvers ask for f and f' at the same time, one after the other:
+  // one evaluation serves both.
+  struct Cached {
+    Work tau = std::numeric_limits<Work>::quiet_NaN();
+    typename LinearSlipLaw<Work>::Point point;
+  } cache;
+  const auto at = [&law, &cache](const Work& t) -> const typename LinearSlipLaw<Work>::Point& {
+    if (!(t == cache.tau)) {
+      cache.point = law.point(t, /*with_bounds=*/false);
+      cache.tau = t;
+    }
+    return cache.point;
+  };
+  const auto f = [&at, &s](const Work& t) { return s * at(t).v; };
+  const auto df = [&at, &s](const Work& t) { return s * at(t).d1; };
   Work from = start.tau;
   Jet<Work> at_from = law.jet(law.point(start.tau));
-  bool from_rest = start.v == 0;
+  // Zeros are not looked for within `blind` of `from` after a start (or a
+  // touch) at v = 0: the stretch where v stays within its rounding error of
+  // zero, from the jet there (f' u + f'' u^2 / 2 = e0), and at least the
+  // time resolution. After a breakaway with Rs = R (f' = 0) it is about
+  // sqrt(2 e0 / f''): no stop can be told apart from rounding sooner.
+  const auto blind_after_rest = [](const Jet<Work>& j, const Work& res) {
+    const Work slope = j.d1 > 0 ? j.d1 : Work(0);
+    const Work curvature = fabs(j.d2) > 0 ? Work(fabs(j.d2)) : Work(1);
+    const Work stretch = 2 * j.e0 / (slope + sqrt(slope * slope + 2 * curvature * j.e0));
+    return stretch > res ? stretch : res;
+  };
+  Work blind = start.v == 0 ? blind_after_rest(at_from, Traits::time_resolution(from)) : Work(0);
   SlipEnd<Work> result;
   for (int touches = 0;; ++touches) {
     if (touches > 64) throw SearchStalled{};  // touch after touch without progress
-    if (from_rest) at_from.f = 0;  // exactly: the slip starts (or goes on) from v = 0
+    if (blind > 0) at_from.f = 0;  // exactly: the slip starts (or goes on) from v = 0
     const Work res = Traits::time_resolution(from);
     ZeroBracket<Work> bracket;
-    if (from < tau_end_)
-      bracket = Search::run(search, from, at_from, tau_end_, from_rest ? res : Work(0), res);
+    if (from < tau_end_) bracket = Search::run(search, from, at_from, tau_end_, blind, res);
     if (!bracket.found) {
-      const auto q = law.point(tau_end_);
+      const auto q = law.point(tau_end_, false);
       result.stops = false;
       result.tau = tau_end_;
       result.x = q.y / omega;
@@ -203,21 +269,20 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       result.acceleration = law.acceleration(q);
       return result;
     }
-    const Work s(start.sign);
-    const auto f = [&law, &s](const Work& t) { return s * law.point(t).v; };
-    const auto df = [&law, &s](const Work& t) { return s * law.point(t).d1; };
-    const Work root = checked(Traits::decreasing_root(f, df, bracket.lo, bracket.hi,
-                                                      summary_->root_function_calls))
-                          .root;
-    const auto q = law.point(root);
+    const auto cached_jet = [&at, &law](const Work& t) { return law.jet(at(t)); };
+    const Work third = law.third_bound(bracket.lo, bracket.at_lo, bracket.hi - bracket.lo);
+    const Work root = root_in(bracket, cached_jet, third, f, df);
+    const auto q = at(root);
     bool merged = false;
     const int next = at_rest(root, q.y, merged);
     if (next == start.sign) {
-      // v touches 0 where the force drives on the same way: not a stop.
+      // v touches 0 where the force drives on the same way: not a stop. The
+      // search goes on past the stretch where v is within its rounding error
+      // of 0 (from the jet: f' u + f'' u^2 / 2 = e0, f'' > 0 at a touch).
       ++summary_->touches;
-      from = root > from ? root : Work(from + Traits::time_resolution(from));
       at_from = law.jet(q);
-      from_rest = true;
+      blind = blind_after_rest(at_from, res);
+      from = root > from ? root : Work(from + res);
       continue;
     }
     summary_->merged_sticks += merged;

@@ -84,6 +84,26 @@ class NetForce {
 
   Work third_bound() const { return third_; }
 
+  // >= |n| everywhere: |f0 - rho^2 y| + sum |a|.
+  Work magnitude_bound() const {
+    using std::fabs;
+    return fabs(offset_) + o_->forcing().bound(0);
+  }
+
+  // >= the rounding-error bound e0 of the jet of f anywhere with |tau| <= tau_max.
+  Work value_error_bound(const Work& tau_max) const {
+    using std::fabs;
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    Work mag_n = mag_offset_, phase_n = 0;
+    for (const auto& term : o_->forcing().terms()) {
+      mag_n += fabs(term.a);
+      phase_n += fabs(term.a) * term.q * (term.q * tau_max + 2 * fabs(term.phase));
+    }
+    const Work e_n = kUlps * eps * mag_n + eps * phase_n;
+    const Work rs = o_->rs();
+    return (rs + mag_n) * e_n * 2 + 4 * eps * (rs + mag_n) * (rs + mag_n);
+  }
+
  private:
   static constexpr int kUlps = 64;
   const Oscillator<Work>* o_;

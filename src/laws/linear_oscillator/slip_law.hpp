@@ -51,14 +51,22 @@ class LinearSlipLaw {
   int sign() const { return s_; }
   const Work& tau_begin() const { return tau_a_; }
 
-  Point point(const Work& tau) const {
+  // The state and derivatives at tau; with_bounds: also the rounding-error
+  // bounds and the tail, which only the event search needs.
+  Point point(const Work& tau, bool with_bounds = true) const {
+    return with_bounds ? evaluate<true>(tau) : evaluate<false>(tau);
+  }
+
+ private:
+  template <bool kBounds>
+  Point evaluate(const Work& tau) const {
     using std::fabs;
     using std::sqrt;
     const Work eps = std::numeric_limits<Work>::epsilon();
     const Work rho2 = o_->rho2();
     const Work sigma = o_->sigma();
     const Transition<Work> t = o_->transition().at(tau - tau_a_);
-    const Steady p = steady(tau);
+    const Steady p = steady<kBounds>(tau);
     Point q;
     q.tau = tau;
     q.y = p.y + t.phi11 * dy_ + t.g * dv_ + g0_ * t.g1;
@@ -66,6 +74,7 @@ class LinearSlipLaw {
     q.d1 = p.g - Work(s_) * o_->r() - 2 * sigma * q.v - rho2 * q.y;
     q.d2 = p.dg - 2 * sigma * q.d1 - rho2 * q.v;
     q.d3 = p.d2g - 2 * sigma * q.d2 - rho2 * q.d1;
+    if constexpr (!kBounds) return q;
     // Rounding: kUlps ulps of the sum of the terms' magnitudes, plus the
     // rounding of the harmonics' arguments q tau + phi (p.phase_*).
     const Work mag_y =
@@ -88,6 +97,7 @@ class LinearSlipLaw {
     return q;
   }
 
+ public:
   // The jet of f = s v at a point, for the event search.
   Jet<Work> jet(const Point& q) const {
     const Work s(s_);
@@ -125,11 +135,12 @@ class LinearSlipLaw {
     Work phase_y = 0, phase_v = 0, phase_g = 0, phase_dg = 0, phase_d2g = 0;
   };
 
+  template <bool kBounds = true>
   Steady steady(const Work& tau) const {
     using std::fabs;
     Steady p;
     p.g = o_->forcing().constant();
-    p.mag_g = fabs(p.g);
+    if constexpr (kBounds) p.mag_g = fabs(p.g);
     const Work u = tau - tau_a_;
     const auto& terms = o_->forcing().terms();
     const auto& responses = o_->responses();
@@ -143,6 +154,19 @@ class LinearSlipLaw {
       p.g += a * sc.sin;
       p.dg += a * q * sc.cos;
       p.d2g -= a * q2 * sc.sin;
+      if constexpr (!kBounds) {
+        if (!h.resonant) {
+          const Work sin_part = a * h.re * sc.sin + a * h.im * sc.cos;
+          const Work cos_part = a * h.re * sc.cos - a * h.im * sc.sin;
+          p.y += sin_part;
+          p.v += q * cos_part;
+        } else {
+          const Work c = a / (2 * q);
+          p.y -= c * u * sc.cos;
+          p.v -= c * (sc.cos - u * q * sc.sin);
+        }
+        continue;
+      }
       p.mag_g += abs_a;
       p.mag_dg += abs_a * q;
       p.mag_d2g += abs_a * q2;

@@ -11,9 +11,10 @@
 // critical damping the over- and underdamped forms divide by ~0; for short
 // times 1 - Phi11 cancels; a slow overdamped root makes 1 - Phi11 tiny), so:
 //
-//   * u max(2 sigma, rho) <= 2: the Taylor series of G from the ODE's
+//   * u max(2 sigma, rho) <= 1/2: the Taylor series of G from the ODE's
 //     recurrence, valid for every damping ratio (no division by the root
-//     separation);
+//     separation); its coefficients depend on the model only, so they are
+//     computed once and each evaluation is three Horner sums;
 //   * otherwise underdamped (sigma < rho): exp(-sigma u) with cos, sin(nu u)/nu;
 //     critically and overdamped: the two decay rates k1 = rho^2/(sigma + mu)
 //     (no cancellation), k2 = sigma + mu, and -expm1(-2 mu u)/(2 mu) for
@@ -27,6 +28,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <boost/math/special_functions/expm1.hpp>
 
@@ -61,6 +63,31 @@ class TransitionFunctions {
       k1_ = sigma + mu_ > 0 ? Work(rho2 / (sigma + mu_)) : Work(0);
       k2_ = sigma + mu_;
     }
+    // G = sum c_n u^n, c_0 = 0, c_1 = 1,
+    // c_{n+2} = -(2 sigma (n+1) c_{n+1} + rho^2 c_n) / ((n+1)(n+2)).
+    // |c_n| <= rate^(n-1) / (n-1)!, so with x = u rate <= kSeriesLimit the
+    // terms after c_N u^N are below eps |G| / 64 once x^N / N! <= eps / 64;
+    // reach_[N] is the largest x for which N terms are enough.
+    if (rate_ > 0) {
+      using std::pow;
+      const Work tiny = std::numeric_limits<Work>::epsilon() / 64;
+      Work factorial = 1;
+      int terms = 1;
+      for (;; ++terms) {
+        factorial *= Work(terms);
+        reach_.push_back(Work(pow(factorial * tiny, Work(1) / Work(terms))));
+        if (reach_.back() >= Work(kSeriesLimit)) break;
+      }
+      std::vector<Work> c(static_cast<std::size_t>(terms) + 2, Work(0));
+      c[1] = 1;
+      for (int n = 0; n + 2 <= terms; ++n)
+        c[n + 2] = -(2 * sigma * Work(n + 1) * c[n + 1] + rho2 * c[n]) / Work((n + 1) * (n + 2));
+      for (int n = 1; n <= terms; ++n) {
+        g_.push_back(c[n]);                 // of u^n
+        dg_.push_back(Work(n) * c[n]);      // of u^(n-1)
+        g1_.push_back(c[n] / Work(n + 1));  // of u^(n+1)
+      }
+    }
   }
 
   // Largest |characteristic root|: the time scale of the transient.
@@ -76,47 +103,43 @@ class TransitionFunctions {
   }
 
  private:
-  static constexpr double kSeriesLimit = 2;
+  static constexpr double kSeriesLimit = 0.5;
 
   Transition<Work> series(const Work& u) const {
     using std::fabs;
-    // G = sum c_n u^n, c_0 = 0, c_1 = 1,
-    // c_{n+2} = -(2 sigma (n+1) c_{n+1} + rho^2 c_n) / ((n+1)(n+2)).
-    // Terms t_n = c_n u^n; |p u| <= 2 makes them fall like 2^n / n!.
     Transition<Work> t;
-    Work previous = 0;   // t_{n}
-    Work current = u;    // t_{n+1}
-    const Work a = 2 * sigma_ * u;
-    const Work b = rho2_ * u * u;
-    Work g = current, dg = 1, g1 = u * u / 2;   // n = 1 terms
-    Work mag_g = fabs(current), mag_dg = 1, mag_g1 = fabs(g1);
-    const Work eps = std::numeric_limits<Work>::epsilon();
-    for (int n = 0; n < 400; ++n) {
-      // t_{n+2} from t_{n+1}, t_n.
-      const Work next = -(a * Work(n + 1) * current + b * previous) / Work((n + 1) * (n + 2));
-      previous = current;
-      current = next;
-      const int power = n + 2;
-      const Work dterm = Work(power) * current / u;
-      const Work iterm = current * u / Work(power + 1);
-      g += current;
-      dg += dterm;
-      g1 += iterm;
-      mag_g += fabs(current);
-      mag_dg += fabs(dterm);
-      mag_g1 += fabs(iterm);
-      // Two negligible terms in a row: the two-term recurrence has died out
-      // (one alone can be an exact zero, e.g. the even terms when sigma = 0).
-      if (fabs(current) <= eps * mag_g / 64 && fabs(previous) <= eps * mag_g / 64) break;
+    if (rate_ == 0) {  // k = c = 0: G = u exactly
+      t.g = u;
+      t.dg = 1;
+      t.phi11 = 1;
+      t.g1 = u * u / 2;
+      t.mag_g = u;
+      t.mag_dg = 1;
+      t.mag_phi11 = 1;
+      t.mag_g1 = t.g1;
+      return t;
     }
-    t.g = g;
+    // Horner sums of the first N precomputed coefficients (c_n u^(n-1),
+    // n >= 1), N the fewest this u needs.
+    const Work x = u * rate_;
+    std::size_t n = 0;
+    while (n + 1 < reach_.size() && reach_[n] < x) ++n;
+    Work g = 0, dg = 0, g1 = 0;
+    for (std::size_t i = n + 1; i-- > 0;) {
+      g = g * u + g_[i];
+      dg = dg * u + dg_[i];
+      g1 = g1 * u + g1_[i];
+    }
+    t.g = g * u;
     t.dg = dg;
-    t.phi11 = dg + 2 * sigma_ * g;
-    t.g1 = g1;
-    t.mag_g = mag_g;
-    t.mag_dg = mag_dg;
-    t.mag_phi11 = mag_dg + 2 * sigma_ * mag_g;
-    t.mag_g1 = mag_g1;
+    t.g1 = g1 * u * u;
+    t.phi11 = t.dg + 2 * sigma_ * t.g;
+    // |c_n| <= rate^(n-1) / (n-1)! bounds the sums of |terms| with u rate <= 1
+    // by e u, 2 e and e u^2 / 2.
+    t.mag_g = 3 * u;
+    t.mag_dg = 6;
+    t.mag_phi11 = 6 + 6 * sigma_ * u;
+    t.mag_g1 = 3 * u * u / 2;
     return t;
   }
 
@@ -182,6 +205,9 @@ class TransitionFunctions {
   Work nu_ = 0;           // underdamped: sqrt(rho^2 - sigma^2)
   Work mu_ = 0;           // overdamped: sqrt(sigma^2 - rho^2)
   Work k1_ = 0, k2_ = 0;  // decay rates sigma -+ mu
+  // Series coefficients, index i for n = i + 1: c_n, n c_n, c_n / (n + 1);
+  // reach_[i]: the largest u rate for which the terms up to n = i + 1 suffice.
+  std::vector<Work> g_, dg_, g1_, reach_;
 };
 
 }  // namespace frictionref::detail

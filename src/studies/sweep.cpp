@@ -4,16 +4,10 @@
 #include "frictionref/sweep.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <boost/math/constants/constants.hpp>
-#include <chrono>
 #include <cmath>
-#include <condition_variable>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <string>
-#include <thread>
 
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
@@ -21,6 +15,7 @@
 #include "frictionref/phase.hpp"
 #include "frictionref/steady_state.hpp"
 #include "frictionref/detail/number_text.hpp"
+#include "studies/parallel_for.hpp"
 
 namespace frictionref {
 namespace {
@@ -37,12 +32,6 @@ Model sweep_model(double lambda, double v0) {
   model.friction = lambda;
   model.v0 = v0;
   return model;
-}
-
-unsigned worker_count(const SweepOptions& options, std::size_t points) {
-  unsigned threads = options.threads;
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  return static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(points, 1)));
 }
 
 }  // namespace
@@ -179,64 +168,11 @@ std::vector<SweepPoint> sweep(const std::vector<double>& lambdas, const SweepOpt
     (void)probe;
   }
 
-  const std::size_t total = lambdas.size();
-  std::vector<SweepPoint> points(total);
-  const unsigned threads = worker_count(options, total);
-  // Chunks small enough to balance the load at the end, large enough that
-  // the counter is touched rarely (a point costs about 1 us per period).
-  const std::size_t chunk =
-      std::clamp<std::size_t>(total / (static_cast<std::size_t>(threads) * 64), 1, 64);
-
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
-  std::mutex mutex;
-  std::condition_variable finished;
-  unsigned running = threads;
-
-  const auto work = [&] {
-    try {
-      while (!failed.load(std::memory_order_relaxed)) {
-        const std::size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
-        if (begin >= total) break;
-        const std::size_t end = std::min(total, begin + chunk);
-        for (std::size_t i = begin; i < end; ++i) points[i] = sweep_point(lambdas[i], options);
-        done.fetch_add(end - begin, std::memory_order_relaxed);
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!error) error = std::current_exception();
-      failed = true;
-    }
-    std::lock_guard<std::mutex> lock(mutex);
-    --running;
-    finished.notify_all();
-  };
-
-  std::vector<std::thread> pool;
-  pool.reserve(threads);
-  try {
-    for (unsigned i = 0; i < threads; ++i) pool.emplace_back(work);
-    std::unique_lock<std::mutex> lock(mutex);
-    while (running > 0) {
-      finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return running == 0; });
-      if (running > 0 && progress && !failed) {
-        lock.unlock();
-        progress(done.load(std::memory_order_relaxed), total);
-        lock.lock();
-      }
-    }
-  } catch (...) {
-    // A thread that could not start, or a progress callback that threw: stop
-    // the workers after their current point and pass the error on.
-    failed = true;
-    for (std::thread& thread : pool) thread.join();
-    throw;
-  }
-  for (std::thread& thread : pool) thread.join();
-  if (error) std::rethrow_exception(error);
-  if (progress) progress(total, total);
+  std::vector<SweepPoint> points(lambdas.size());
+  // A point costs about 1 us per period.
+  detail::parallel_for(
+      lambdas.size(), options.threads,
+      [&](std::size_t i) { points[i] = sweep_point(lambdas[i], options); }, progress);
   return points;
 }
 
