@@ -271,7 +271,12 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     }
     const auto cached_jet = [&at, &law](const Work& t) { return law.jet(at(t)); };
     const Work third = law.third_bound(bracket.lo, bracket.at_lo, bracket.hi - bracket.lo);
-    const Work root = root_in(bracket, cached_jet, third, f, df);
+    // A bracket that starts where the slip starts (from rest, or after a
+    // touch) comes from the jump over the stretch where v is within rounding
+    // of 0 (first_zero.hpp): the slip ends, unresolvably, inside that
+    // stretch; its end is taken as the stop, not the start (where the at-rest
+    // rule has just said "slide").
+    const Work root = bracket.at_lo.f > 0 ? root_in(bracket, cached_jet, third, f, df) : bracket.hi;
     const auto q = at(root);
     bool merged = false;
     const int next = at_rest(root, q.y, merged);
@@ -280,7 +285,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       // search goes on past the stretch where v is within its rounding error
       // of 0 (from the jet: f' u + f'' u^2 / 2 = e0, f'' > 0 at a touch).
       ++summary_->touches;
-      at_from = law.jet(q);
+      at_from = law.jet(law.point(root));  // with its rounding bounds
       blind = blind_after_rest(at_from, res);
       from = root > from ? root : Work(from + res);
       continue;
