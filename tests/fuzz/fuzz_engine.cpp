@@ -44,6 +44,20 @@
 //               bit 3 v0 is in units of B / (m w); bit 4 max_phases follows (uint16)
 //   fields      mass, amplitude, omega, friction|lambda, x0, v0, t0, t_end|span|periods
 //   [2 bytes]   max_phases (little endian), if flag bit 4
+//   the general model, if flag bit 5 (docs/theory.md 7):
+//   byte        encoding of the general fields (bit i: field i raw, else decimal)
+//   fields      static (Rs = R + |field|, or the raw value itself when raw), stiffness,
+//               damping, force_offset
+//   byte        number of extra harmonics, % 4; then per harmonic B, W, PHI (encoding
+//               bits 4, 5, 6 of the general byte, shared by all harmonics)
+//
+// The general model (anything but the seed's) is checked against its own rules:
+// N(t) = F(t) - k x; a stick keeps |N| <= Rs, a breakaway has |N| = Rs in the
+// slip's direction, a stop into a stick has |N| <= Rs, a reversal has N
+// beyond Rs against the old direction; a slip keeps the sign of v. Its
+// tolerances are relative to the a priori bounds of the motion (1e-9 of them):
+// the target looks for wrong decisions, not for the last ulp.
+#include <algorithm>
 #include <cinttypes>
 #include <cmath>
 #include <cstddef>
@@ -196,6 +210,12 @@ void print_phase(const char* name, const Phase& p) {
                  m.mass, m.amplitude, m.omega, m.friction, m.x0, m.v0, m.t0, g_context->t_end,
                  g_context->max_phases ? std::to_string(*g_context->max_phases).c_str() : "(none)",
                  g_context->phase_number);
+    if (!m.is_harmonic_coulomb()) {
+      std::fprintf(stderr, "  static_friction=%.17g stiffness=%.17g damping=%.17g force_offset=%.17g\n",
+                   m.static_limit(), m.stiffness, m.damping, m.force_offset);
+      for (const auto& h : m.harmonics)
+        std::fprintf(stderr, "  harmonic=%.17g,%.17g,%.17g\n", h.amplitude, h.omega, h.phase);
+    }
   }
   if (previous) print_phase("previous", *previous);
   if (phase) print_phase("phase", *phase);
@@ -247,6 +267,124 @@ bool solution_in_double_range(const Model& m, double t_end) {
 bool finite(const Phase& p) {
   return std::isfinite(p.t_begin) && std::isfinite(p.t_end) && std::isfinite(p.x_begin) &&
          std::isfinite(p.x_end) && std::isfinite(p.v_begin) && std::isfinite(p.v_end);
+}
+
+
+// ---- the general model --------------------------------------------------
+
+// A priori bounds of the general motion over [t0, t_end] (the energy grows at
+// most at rate |v| (F_max + R)), its fastest rate, and the scale tolerances are
+// taken relative to.
+struct GeneralScales {
+  long double force = 0;   // |F0| + B + sum |B_i|
+  long double speed = 0;   // >= |v|
+  long double travel = 0;  // >= |x|
+  long double fast = 0;    // max(w, w_i, sqrt(k/m), c/m) [1/time]
+};
+
+GeneralScales general_scales(const Model& m, double t_end) {
+  GeneralScales g;
+  g.force = std::fabs(static_cast<long double>(m.force_offset)) + m.amplitude;
+  for (const auto& h : m.harmonics) g.force += std::fabs(static_cast<long double>(h.amplitude));
+  const long double v0 = m.v0, x0 = m.x0, k = m.stiffness, mass = m.mass;
+  const long double span = static_cast<long double>(t_end) - m.t0;
+  g.speed = std::sqrt(v0 * v0 + k * x0 * x0 / mass) + (g.force + m.friction) * span / mass;
+  g.travel = std::fabs(x0) + g.speed * span;
+  g.fast = std::max<long double>(m.omega, std::sqrt(k / mass));
+  g.fast = std::max<long double>(g.fast, m.damping / mass);
+  for (const auto& h : m.harmonics) g.fast = std::max<long double>(g.fast, h.omega);
+  return g;
+}
+
+// F(t) - k x, in long double.
+long double net_force(const Model& m, double t, double x) {
+  long double f = m.force_offset + static_cast<long double>(m.amplitude) *
+                                       std::sin(static_cast<long double>(m.omega) * t);
+  for (const auto& h : m.harmonics)
+    f += static_cast<long double>(h.amplitude) *
+         std::sin(static_cast<long double>(h.omega) * t + h.phase);
+  return f - static_cast<long double>(m.stiffness) * x;
+}
+
+// Tolerance of N at t: 1e-9 of the forces involved, plus the rounding of the
+// forcing phases at |t| (a stored time is rounded to double).
+long double force_tolerance(const Model& m, const GeneralScales& g, double t, double x) {
+  const long double scale = g.force + m.static_limit() + std::fabs(m.stiffness * x);
+  const long double phase = 64 * kEps * std::fmax(1.0L, g.fast * std::fabs(t));
+  return 1e-9L * scale + phase * (g.force + std::fabs(m.stiffness * x));
+}
+
+long double speed_tolerance(const GeneralScales& g) { return 1e-9L * g.speed; }
+
+void check_phase_general(const Model& m, const GeneralScales& g, const Phase& p) {
+  FUZZ_CHECK_AT(std::isfinite(p.t_begin) && std::isfinite(p.t_end), &p);
+  FUZZ_CHECK_AT(p.t_begin < p.t_end, &p);
+  FUZZ_CHECK_AT(finite(p), &p);
+  const int s = frictionref::slip_sign(p.kind);
+  if (s == 0) {
+    FUZZ_CHECK_AT(p.v_begin == 0 && p.v_end == 0, &p);
+    FUZZ_CHECK_AT(p.x_begin == p.x_end, &p);
+  } else {
+    FUZZ_CHECK_AT(s * p.v_begin >= 0, &p);
+    FUZZ_CHECK_AT(s * p.v_end >= -speed_tolerance(g), &p);
+  }
+  for (int k = 1; k <= kSamples; ++k) {
+    const double t = p.t_begin + (p.t_end - p.t_begin) * k / (kSamples + 1);
+    if (!(t > p.t_begin && t < p.t_end)) continue;
+    const frictionref::State state = frictionref::evaluate(m, p, t);
+    FUZZ_CHECK_AT(std::isfinite(state.x) && std::isfinite(state.v) && std::isfinite(state.a), &p);
+    if (s == 0) {
+      FUZZ_CHECK_AT(state.v == 0 && state.x == p.x_begin, &p);
+      FUZZ_CHECK_AT(std::fabs(net_force(m, t, p.x_begin)) <=
+                        m.static_limit() + force_tolerance(m, g, t, p.x_begin),
+                    &p);
+    } else {
+      FUZZ_CHECK_AT(s * state.v >= -speed_tolerance(g), &p);
+      FUZZ_CHECK_AT(std::fabs(state.v) <= g.speed * (1 + 1e-9L) + speed_tolerance(g), &p);
+    }
+  }
+}
+
+void check_boundary_general(const Model& m, const GeneralScales& g, const Phase& p,
+                            const Phase& q, std::uint64_t skipped) {
+  FUZZ_CHECK_AT(q.t_begin == p.t_end, &q, &p);
+  FUZZ_CHECK_AT(p.v_end == 0, &q, &p);
+  FUZZ_CHECK_AT(q.v_begin == 0, &q, &p);
+  if (skipped > 0) return;  // sub-resolution phases in between: no decision to check
+  FUZZ_CHECK_AT(p.kind != q.kind, &q, &p);
+  FUZZ_CHECK_AT(q.x_begin == p.x_end, &q, &p);
+  const long double n = net_force(m, q.t_begin, q.x_begin);
+  const long double tolerance = force_tolerance(m, g, q.t_begin, q.x_begin);
+  const long double rs = m.static_limit();
+  const int s = frictionref::slip_sign(p.kind), next = frictionref::slip_sign(q.kind);
+  if (s == 0) {  // a breakaway: |N| reached Rs in the slip's direction
+    FUZZ_CHECK_AT(std::fabs(std::fabs(n) - rs) <= tolerance, &q, &p);
+    FUZZ_CHECK_AT(next * n >= -tolerance, &q, &p);
+  } else if (next == 0) {  // a stop into a stick
+    FUZZ_CHECK_AT(std::fabs(n) <= rs + tolerance, &q, &p);
+  } else {  // a reversal: N beats Rs against the old direction
+    FUZZ_CHECK_AT(next == -s, &q, &p);
+    FUZZ_CHECK_AT(next * n >= rs - tolerance, &q, &p);
+  }
+}
+
+void check_first_general(const Model& m, const GeneralScales& g, const Phase& p,
+                         std::uint64_t skipped) {
+  FUZZ_CHECK_AT(p.t_begin == m.t0, &p);
+  if (skipped > 0) return;  // an initial slip shorter than the resolution
+  FUZZ_CHECK_AT(p.x_begin == m.x0, &p);
+  FUZZ_CHECK_AT(p.v_begin == m.v0, &p);
+  const int s = frictionref::slip_sign(p.kind);
+  if (m.v0 > 0) FUZZ_CHECK_AT(s == 1, &p);
+  if (m.v0 < 0) FUZZ_CHECK_AT(s == -1, &p);
+  if (m.v0 == 0) {
+    const long double n = net_force(m, m.t0, m.x0);
+    const long double margin = 1e3L * force_tolerance(m, g, m.t0, m.x0);
+    const long double rs = m.static_limit();
+    if (n > rs + margin) FUZZ_CHECK_AT(s == 1, &p);
+    if (n < -(rs + margin)) FUZZ_CHECK_AT(s == -1, &p);
+    if (std::fabs(n) < rs - margin) FUZZ_CHECK_AT(s == 0, &p);
+  }
 }
 
 void check_phase(const Model& m, const Phase& p, bool values) {
@@ -398,8 +536,18 @@ void run(const Model& model, double t_end, const SolveOptions& options, bool lim
   FUZZ_CHECK(std::isfinite(model.friction) && model.friction >= 0);
   FUZZ_CHECK(std::isfinite(model.x0) && std::isfinite(model.v0) && std::isfinite(model.t0));
   FUZZ_CHECK(std::isfinite(t_end) && t_end > model.t0);
+  FUZZ_CHECK(model.static_limit() >= model.friction);
+  FUZZ_CHECK(std::isfinite(model.stiffness) && model.stiffness >= 0);
+  FUZZ_CHECK(std::isfinite(model.damping) && model.damping >= 0);
+  FUZZ_CHECK(std::isfinite(model.force_offset));
+  for (const auto& h : model.harmonics)
+    FUZZ_CHECK(std::isfinite(h.amplitude) && std::isfinite(h.phase) && h.omega > 0);
 
-  const long double periods = (static_cast<long double>(t_end) - model.t0) * model.omega / kTwoPi;
+  const bool general = !model.is_harmonic_coulomb();
+  const GeneralScales scales = general_scales(model, t_end);
+  // Periods of the fastest rate of the model (the forcing's for the seed).
+  const long double fastest = general ? scales.fast : static_cast<long double>(model.omega);
+  const long double periods = (static_cast<long double>(t_end) - model.t0) * fastest / kTwoPi;
   if (!(periods <= kMaxPeriods)) return;  // bound the work per input
   const std::uint64_t max_count =
       kPhasesPerPeriod * (static_cast<std::uint64_t>(std::floor(periods)) + 1);
@@ -427,11 +575,19 @@ void run(const Model& model, double t_end, const SolveOptions& options, bool lim
     FUZZ_CHECK_AT(now >= transitions_before + own_end, &phase);
     const std::uint64_t skipped = now - transitions_before - own_end;
     transitions_before = now;
-    check_phase(model, phase, values);
-    if (count == 1)
-      check_first(model, phase, values, skipped);
-    else
-      check_boundary(model, previous, phase, values, skipped);
+    if (general) {
+      check_phase_general(model, scales, phase);
+      if (count == 1)
+        check_first_general(model, scales, phase, skipped);
+      else
+        check_boundary_general(model, scales, previous, phase, skipped);
+    } else {
+      check_phase(model, phase, values);
+      if (count == 1)
+        check_first(model, phase, values, skipped);
+      else
+        check_boundary(model, previous, phase, values, skipped);
+    }
     ++by_kind[static_cast<int>(phase.kind)];
     previous = phase;
   }
@@ -471,8 +627,8 @@ void run(const Model& model, double t_end, const SolveOptions& options, bool lim
   }
   FUZZ_CHECK(!summary.brief_report().empty());
 
-  // The steady state of the same model (any B > 0): a regime consistent with lambda.
-  if (model.amplitude > 0) {
+  // The steady state of the seed's model (any B > 0): a regime consistent with lambda.
+  if (!general && model.amplitude > 0) {
     const frictionref::SteadyState steady = frictionref::steady_state(model);
     FUZZ_CHECK(steady.regime == frictionref::regime_for(model.friction / model.amplitude));
     FUZZ_CHECK(steady.stuck_fraction >= 0 && steady.stuck_fraction <= 1);
@@ -517,6 +673,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   SolveOptions options;
   const bool limited = (flags & 16) != 0;
   if (limited) options.max_phases = bytes.little_endian(2);
+  if (flags & 32) {
+    const std::uint8_t general = bytes.byte();
+    const auto next = [&](int bit) { return (general >> bit) & 1 ? bytes.raw_double() : bytes.decimal(); };
+    const double static_field = next(0);
+    model.static_friction = (general & 1) ? static_field : model.friction + std::fabs(static_field);
+    model.stiffness = next(1);
+    model.damping = next(2);
+    model.force_offset = next(3);
+    const int harmonics = bytes.byte() % 4;
+    for (int i = 0; i < harmonics; ++i) {
+      frictionref::Harmonic h;
+      h.amplitude = next(4);
+      h.omega = next(5);
+      h.phase = next(6);
+      model.harmonics.push_back(h);
+    }
+  }
 
   run(model, t_end, options, limited);
   return 0;

@@ -8,6 +8,8 @@
 // where term 0 is the first harmonic B sin(w t) (q = 1, phi = 0) when B != 0.
 #pragma once
 
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <vector>
 
@@ -33,7 +35,8 @@ class Forcing {
     if (model.amplitude != 0) terms_.push_back({Work(model.amplitude) / mw, Work(1), Work(0)});
     for (const auto& h : model.harmonics)
       if (h.amplitude != 0)
-        terms_.push_back({Work(h.amplitude) / mw, Work(h.omega) / Work(model.omega), Work(h.phase)});
+        terms_.push_back(
+            {Work(h.amplitude) / mw, Work(h.omega) / Work(model.omega), reduced_phase(h.phase)});
     for (int k = 0; k < kBounds; ++k) {
       bounds_[k] = 0;
       for (const auto& term : terms_) {
@@ -45,6 +48,20 @@ class Forcing {
   }
 
   const std::vector<ForcingTerm<Work>>& terms() const { return terms_; }
+  // phi mod 2 pi in [-pi, pi], computed in 50 digits: q tau + phi then keeps
+  // the relative accuracy of q tau however large the given phase.
+  template <class Real>
+  static Work reduced_phase(const Real& phase) {
+    using std::fabs;
+    if (fabs(phase) <= 4) return Work(phase);
+    using Wide = boost::multiprecision::cpp_bin_float_50;
+    const Wide two_pi = boost::math::constants::two_pi<Wide>();
+    Wide reduced = fmod(Wide(phase), two_pi);
+    if (reduced > boost::math::constants::pi<Wide>()) reduced -= two_pi;
+    if (reduced < -boost::math::constants::pi<Wide>()) reduced += two_pi;
+    return static_cast<Work>(reduced);
+  }
+
   const Work& constant() const { return constant_; }
   bool oscillates() const { return !terms_.empty(); }
 

@@ -54,10 +54,11 @@ class NetForce {
       mag_n += abs_a;
       mag_d1 += abs_a * term.q;
       mag_d2 += abs_a * q2;
+      // The argument is rounded by up to |theta| ulps (radians per ulp).
       const Work arg = fabs(theta) + fabs(term.phase);
-      phase_n += abs_a * term.q * arg;
-      phase_d1 += abs_a * q2 * arg;
-      phase_d2 += abs_a * q2 * term.q * arg;
+      phase_n += abs_a * arg;
+      phase_d1 += abs_a * term.q * arg;
+      phase_d2 += abs_a * q2 * arg;
     }
     const Work k = kUlps * eps;
     p.e_n = k * mag_n + eps * phase_n;
@@ -97,7 +98,7 @@ class NetForce {
     Work mag_n = mag_offset_, phase_n = 0;
     for (const auto& term : o_->forcing().terms()) {
       mag_n += fabs(term.a);
-      phase_n += fabs(term.a) * term.q * (term.q * tau_max + 2 * fabs(term.phase));
+      phase_n += fabs(term.a) * (term.q * tau_max + 2 * fabs(term.phase));
     }
     const Work e_n = kUlps * eps * mag_n + eps * phase_n;
     const Work rs = o_->rs();

@@ -170,10 +170,12 @@ class LinearSlipLaw {
       p.mag_g += abs_a;
       p.mag_dg += abs_a * q;
       p.mag_d2g += abs_a * q2;
-      const Work arg = fabs(theta) + fabs(f.phase);  // size of the argument's rounding, per ulp
-      p.phase_g += abs_a * q * arg;
-      p.phase_dg += abs_a * q2 * arg;
-      p.phase_d2g += abs_a * q3 * arg;
+      // The argument q tau + phi is rounded by up to |theta| ulps (radians per
+      // ulp): each value moves by its derivative in theta times that.
+      const Work arg = fabs(theta) + fabs(f.phase);
+      p.phase_g += abs_a * arg;
+      p.phase_dg += abs_a * q * arg;
+      p.phase_d2g += abs_a * q2 * arg;
       if (!h.resonant) {
         const Work in_phase = a * h.re, quadrature = a * h.im;  // y_p = A sin + C cos
         const Work sin_part = in_phase * sc.sin + quadrature * sc.cos;
@@ -187,8 +189,8 @@ class LinearSlipLaw {
         p.mag_v += size * q;
         p.mag_d2v += size * q3;
         p.mag_d3v += size * q4;
-        p.phase_y += size * q * arg;
-        p.phase_v += size * q2 * arg;
+        p.phase_y += size * arg;
+        p.phase_v += size * q * arg;
       } else {
         // Y = -(a / 2q) u cos(theta), from the start of this slip.
         const Work c = a / (2 * q);

@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""Seed inputs of the general model for fuzz_engine (tests/fuzz/corpus/engine/general-*).
+
+Each seed is a model of the general family written in fuzz_engine's input
+layout (see the comment at the top of tests/fuzz/fuzz_engine.cpp) with every
+field as a decimal m * 10^e. Run from the repository root:
+
+    python3 tests/fuzz/tools/make_engine_seeds.py
+
+It rewrites the general-* files; the other seeds are untouched.
+"""
+import pathlib
+import struct
+
+
+def decimal(value_mantissa, exponent):
+    """A field m * 10^e: int24 mantissa (little endian), int8 exponent."""
+    m = value_mantissa & 0xFFFFFF
+    return struct.pack("<I", m)[:3] + struct.pack("<b", exponent)
+
+
+def seed(mass, amplitude, omega, friction, x0, v0, t0, periods,
+         static_extra, stiffness, damping, offset, harmonics):
+    """Fields as (mantissa, exponent) pairs; t_end as a number of forcing periods."""
+    out = bytes([0x00, (2 << 1) | 32])  # decimals; t_end in periods; general block
+    for field in (mass, amplitude, omega, friction, x0, v0, t0, periods):
+        out += decimal(*field)
+    out += bytes([0x00])  # general fields as decimals
+    for field in (static_extra, stiffness, damping, offset):
+        out += decimal(*field)
+    out += bytes([len(harmonics)])
+    for b, w, phi in harmonics:
+        out += decimal(*b) + decimal(*w) + decimal(*phi)
+    return out
+
+
+one, zero = (1, 0), (0, 0)
+SEEDS = {
+    # name: (mass, B, w, R, x0, v0, t0, periods, Rs - R, k, c, F0, harmonics)
+    "general-static": (one, one, one, (7, -1), zero, zero, zero, (20, 0), (1, -1), zero, zero, zero, []),
+    "general-spring": (one, one, (2, 0), (2, -1), zero, zero, zero, (20, 0), zero, one, zero, zero, []),
+    "general-damped": (one, one, one, (3, -1), zero, zero, zero, (20, 0), zero, one, (1, -1), zero, []),
+    "general-overdamped": (one, one, one, (3, -1), zero, zero, zero, (10, 0), zero, one, (5, 0), zero, []),
+    "general-critical": (one, one, one, (3, -1), zero, zero, zero, (10, 0), zero, one, (2, 0), zero, []),
+    "general-resonant": (one, one, (2, 0), (2, -1), zero, zero, zero, (10, 0), zero, (4, 0), zero, zero, []),
+    "general-offset": (one, one, one, (5, -1), zero, zero, zero, (10, 0), (2, -1), zero, zero, (3, -1), []),
+    "general-harmonics": (one, one, one, (4, -1), zero, zero, zero, (10, 0), (2, -1), one, (1, -1), zero,
+                          [((3, -1), (3, 0), zero), ((2, -1), (25, -1), (1, 0))]),
+    "general-free-coulomb": (one, zero, one, (1, -1), (1, 0), zero, zero, (5, 0), zero, one, zero, zero, []),
+    "general-drift": (one, zero, one, (2, -1), zero, zero, zero, (5, 0), zero, zero, (1, -1), (3, -1), []),
+}
+
+def main():
+    corpus = pathlib.Path("tests/fuzz/corpus/engine")
+    for name, fields in SEEDS.items():
+        (corpus / name).write_bytes(seed(*fields))
+    print(f"wrote {len(SEEDS)} seeds to {corpus}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,269 @@
+// The general model (static friction, spring, damper, offset, harmonics)
+// against closed forms derived here independently of the engine's phase
+// laws (docs/theory.md 7), and its edge cases (theory.md 7.7).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "frictionref/exact_engine.hpp"
+#include "frictionref/model.hpp"
+#include "frictionref/multiprecision.hpp"
+#include "frictionref/phase.hpp"
+
+namespace frictionref {
+namespace {
+
+const double pi = 3.14159265358979323846;
+
+// Relative error in units of the double ulp of `expected` (at least the ulp of 1).
+double ulps(double actual, long double expected) {
+  const double scale = std::fmax(std::fabs(static_cast<double>(expected)), 1.0);
+  return static_cast<double>(std::fabs(actual - expected)) /
+         (scale * std::numeric_limits<double>::epsilon());
+}
+
+// ---- free Coulomb oscillator: m x'' + k x = -R sign(v) ------------------------
+// Every half cycle lasts pi sqrt(m/k) and ends 2R/k closer to 0 (on the other
+// side); the mass stays once |k x| <= Rs at a turning point (the classical
+// result, e.g. Den Hartog, Mechanical Vibrations, 1956, section 8.2).
+TEST(GeneralEngine, FreeCoulombOscillatorLosesTwoRoverKPerHalfCycle) {
+  Model m;
+  m.mass = 2;
+  m.stiffness = 8;  // w_n = 2, half cycle pi / 2
+  m.amplitude = 0;
+  m.friction = 0.5;  // 2 R / k = 0.125
+  m.x0 = 1;
+  const Solution s = solve(m, 20.0);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end);
+  const double half = pi / 2, step = 0.125;
+  // |x0| = 1 = 8 steps: turning points at 1 - 0.125 j, sign alternating,
+  // until |x| <= R/k = 0.0625 (Rs = R): 1 - 8 * 0.125 = 0 after 8 half cycles.
+  ASSERT_EQ(s.phases.size(), 9u);
+  for (int j = 0; j < 8; ++j) {
+    const Phase& p = s.phases[static_cast<std::size_t>(j)];
+    EXPECT_EQ(p.kind, j % 2 == 0 ? PhaseKind::slip_backward : PhaseKind::slip_forward);
+    EXPECT_LT(ulps(p.t_end, (j + 1) * static_cast<long double>(half)), 8) << "half cycle " << j;
+    const double expected_x = (j % 2 == 0 ? -1 : 1) * (1 - step * (j + 1));
+    EXPECT_NEAR(p.x_end, expected_x, 1e-15) << "half cycle " << j;
+  }
+  EXPECT_EQ(s.phases.back().kind, PhaseKind::stick);
+}
+
+// With static friction above the sliding one, the first turning point with
+// |k x| <= Rs ends the motion, even where |k x| > R.
+TEST(GeneralEngine, FreeCoulombOscillatorStopsWhereStaticFrictionHolds) {
+  Model m;
+  m.stiffness = 1;
+  m.amplitude = 0;
+  m.friction = 0.1;          // 2 R / k = 0.2 per half cycle
+  m.static_friction = 0.35;  // holds once |x| <= 0.35
+  m.x0 = 1;                  // turning points 0.8, 0.6, 0.4, then 0.2 <= 0.35
+  const Solution s = solve(m, 30.0);
+  ASSERT_EQ(s.phases.size(), 5u);
+  EXPECT_NEAR(s.phases[3].x_end, 0.2, 1e-15);
+  EXPECT_EQ(s.phases[4].kind, PhaseKind::stick);
+  // At x = -0.4 (|k x| = 0.4 > Rs) the mass did reverse.
+  EXPECT_NEAR(s.phases[2].x_end, -0.4, 1e-15);
+  EXPECT_EQ(s.phases[3].kind, PhaseKind::slip_forward);
+}
+
+// ---- the linear oscillator without friction ---------------------------------
+// m x'' + c x' + k x = 0 from (x0, v0): v(t) = e^(-s t) (v0 cos(d t) -
+// ((w_n^2 x0 + s v0) / d) sin(d t)), s = c/2m, d = sqrt(w_n^2 - s^2). Its zeros
+// (where the engine's phases end, R = 0: every one a reversal) are at
+// d t = atan2(v0 d, w_n^2 x0 + s v0) + j pi.
+TEST(GeneralEngine, UnderdampedFreeVibrationReversesAtTheVelocityZeros) {
+  Model m;
+  m.mass = 1.5;
+  m.stiffness = 6;   // w_n^2 = 4
+  m.damping = 0.75;  // s = 0.25
+  m.amplitude = 0;
+  m.friction = 0;
+  m.x0 = 0.5;
+  m.v0 = 1;
+  const long double s = 0.25L, wn2 = 4, d = std::sqrt(wn2 - s * s);
+  const long double first = std::atan2(1.0L * d, wn2 * 0.5L + s * 1.0L);
+  const Solution sol = solve(m, 10.0);
+  ASSERT_GE(sol.phases.size(), 5u);
+  for (std::size_t j = 0; j + 1 < sol.phases.size(); ++j) {
+    const long double t = (first + static_cast<long double>(j) * 3.14159265358979323846L) / d;
+    EXPECT_LT(ulps(sol.phases[j].t_end, t), 8) << "zero " << j;
+    // x there: x(t) = e^(-s t) (x0 cos(d t) + ((v0 + s x0) / d) sin(d t)).
+    const long double x =
+        std::exp(-s * t) * (0.5L * std::cos(d * t) + (1 + s * 0.5L) / d * std::sin(d * t));
+    EXPECT_NEAR(sol.phases[j].x_end, static_cast<double>(x), 1e-15) << "zero " << j;
+  }
+}
+
+// Overdamped and critically damped free motion never reverses; x decays to 0.
+// Critical: x(t) = (x0 + (v0 + w_n x0) t) e^(-w_n t).
+TEST(GeneralEngine, CriticallyDampedFreeMotionMatchesItsClosedForm) {
+  Model m;
+  m.stiffness = 4;  // w_n = 2
+  m.damping = 4;    // c = 2 sqrt(k m): zeta = 1
+  m.amplitude = 0;
+  m.friction = 0;
+  m.x0 = 1;
+  m.v0 = 0;  // from rest: slides toward 0 (N = -k x0)
+  const Solution sol = solve(m, 6.0);
+  ASSERT_EQ(sol.phases.size(), 1u);
+  EXPECT_EQ(sol.phases[0].kind, PhaseKind::slip_backward);
+  for (double t : {0.1, 0.5, 1.0, 2.5, 5.9}) {
+    const State st = sol.state_at(t);
+    const long double x = (1 + 2.0L * t) * std::exp(-2.0L * t);
+    const long double v = -4.0L * t * std::exp(-2.0L * t);
+    EXPECT_NEAR(st.x, static_cast<double>(x), 4e-16) << t;
+    EXPECT_NEAR(st.v, static_cast<double>(v), 4e-16) << t;
+  }
+}
+
+// Damping ratios a rounding away from 1 give the critically damped motion to
+// rounding (no cancellation between the over- and underdamped forms).
+TEST(GeneralEngine, DampingRatiosNextToOneAreContinuous) {
+  Model m;
+  m.stiffness = 4;
+  m.damping = 4;
+  m.amplitude = 0;
+  m.friction = 0;
+  m.x0 = 1;
+  const Solution critical = solve(m, 6.0);
+  for (double c : {std::nextafter(4.0, 5.0), std::nextafter(4.0, 3.0), 4 * (1 + 1e-12),
+                   4 * (1 - 1e-12)}) {
+    Model near = m;
+    near.damping = c;
+    const Solution sol = solve(near, 6.0);
+    for (double t : {0.3, 1.7, 4.2}) {
+      // The motion depends smoothly on c: |dx/dc| <= t^2 e^(-2t) here, so the
+      // difference stays at the level of the change in c times that.
+      const double change = std::fabs(c - 4) * t * t;
+      EXPECT_NEAR(sol.state_at(t).x, critical.state_at(t).x, 4e-16 + change) << c << " " << t;
+      EXPECT_NEAR(sol.state_at(t).v, critical.state_at(t).v, 4e-16 + change) << c << " " << t;
+    }
+  }
+}
+
+// ---- static friction with k = c = 0 -------------------------------------------
+// A constant force between R and Rs never starts the mass; above Rs it slides
+// at once with a = (F0 - R)/m, x = x0 + a t^2 / 2.
+TEST(GeneralEngine, ConstantForceBetweenKineticAndStaticFrictionNeverMoves) {
+  Model m;
+  m.amplitude = 0;
+  m.friction = 0.5;
+  m.static_friction = 0.8;
+  m.force_offset = 0.8;  // |N| = Rs exactly: holds
+  const Solution s = solve(m, 100.0);
+  ASSERT_EQ(s.phases.size(), 1u);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::stick);
+  m.force_offset = std::nextafter(0.8, 1.0);
+  const Solution moving = solve(m, 2.0);
+  ASSERT_EQ(moving.phases.size(), 1u);
+  EXPECT_EQ(moving.phases[0].kind, PhaseKind::slip_forward);
+  const long double a = std::nextafter(0.8, 1.0) - 0.5L;
+  EXPECT_NEAR(moving.phases[0].x_end, static_cast<double>(a * 2), 1e-15);
+  EXPECT_NEAR(moving.phases[0].v_end, static_cast<double>(a * 2), 1e-15);
+}
+
+// B sin(w t) with Rs > R: the first breakaway is where B sin(w t) = Rs.
+TEST(GeneralEngine, BreakawayWhereTheForceFirstExceedsStaticFriction) {
+  Model m;
+  m.friction = 0.5;
+  m.static_friction = 0.75;
+  const Solution s = solve(m, 3.0);
+  ASSERT_GE(s.phases.size(), 2u);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::stick);
+  EXPECT_LT(ulps(s.phases[0].t_end, std::asin(0.75L)), 4);
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::slip_forward);
+  // Just after it: a = (B sin(w t) - R) / m = 0.25 > 0 (the jump of static friction).
+  EXPECT_NEAR(evaluate(m, s.phases[1], s.phases[1].t_begin).a, 0.25, 1e-15);
+}
+
+// A spring whose equilibrium lies inside the stick band: from rest at x0 with
+// |F0 - k x0| <= Rs the mass never moves.
+TEST(GeneralEngine, EquilibriumInsideTheStickBandHolds) {
+  Model m;
+  m.amplitude = 0;
+  m.stiffness = 10;
+  m.friction = 1;
+  m.force_offset = 2;
+  m.x0 = 0.15;  // N = 2 - 1.5 = 0.5 <= 1
+  const Solution s = solve(m, 50.0);
+  ASSERT_EQ(s.phases.size(), 1u);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::stick);
+}
+
+// A slip that reaches v = 0 with R < |N| <= Rs sticks (static friction takes
+// over); with |N| > Rs against it, it reverses at once.
+TEST(GeneralEngine, StopDecidedByStaticFriction) {
+  // Free spring oscillator from x0 = 1: the first turning point is at
+  // x = -(1 - 2R/k) = -0.8 with R = 0.1, where |k x| = 0.8.
+  Model m;
+  m.amplitude = 0;
+  m.stiffness = 1;
+  m.friction = 0.1;
+  m.x0 = 1;
+  m.static_friction = 0.8;  // |N| = Rs exactly: sticks
+  Solution s = solve(m, 10.0);
+  ASSERT_EQ(s.phases.size(), 2u);
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::stick);
+  m.static_friction = 0.79;  // |N| > Rs: reverses
+  s = solve(m, 10.0);
+  ASSERT_GE(s.phases.size(), 2u);
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::slip_forward);
+  EXPECT_EQ(s.summary.reversals >= 1, true);
+}
+
+// v0 != 0 starts a slip in its direction whatever the force.
+TEST(GeneralEngine, InitialVelocityStartsASlip) {
+  Model m;
+  m.stiffness = 1;
+  m.friction = 0.2;
+  m.static_friction = 5;
+  m.v0 = -0.01;
+  const Solution s = solve(m, 5.0);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::slip_backward);
+  EXPECT_EQ(s.phases[0].v_begin, -0.01);
+}
+
+// Resonance without damping (w = sqrt(k/m), R = 0): from rest,
+// x(t) = B / (2 m w^2) (sin(w t) - w t cos(w t)), growing linearly.
+TEST(GeneralEngine, UndampedResonanceGrowsLinearly) {
+  Model m;
+  m.mass = 1;
+  m.stiffness = 4;
+  m.omega = 2;
+  m.amplitude = 1;
+  m.friction = 0;
+  m.x0 = 0;
+  m.v0 = 1e-300;  // a slip from t0 (at rest with R = Rs = 0 it would break away at once anyway)
+  m.v0 = 0;
+  const Solution s = solve(m, 40.0);
+  for (double t : {1.0, 7.5, 20.25, 39.0}) {
+    const long double wt = 2.0L * t;
+    const long double x = (std::sin(wt) - wt * std::cos(wt)) / 8;
+    EXPECT_NEAR(s.state_at(t).x, static_cast<double>(x), 1e-14 * (1 + t)) << t;
+  }
+}
+
+// The 50-digit instantiation runs the same template for every model and agrees
+// with the double engine to the double engine's rounding.
+TEST(GeneralEngine, FiftyDigitInstanceAgrees) {
+  Model m;
+  m.stiffness = 1;
+  m.damping = 0.2;
+  m.friction = 0.3;
+  m.static_friction = 0.45;
+  m.force_offset = 0.1;
+  m.harmonics.push_back({0.4, 2.5, 0.3});
+  const Solution d = solve(m, 20.0);
+  const BasicSolution<HighPrecision> h = solve(model_cast<HighPrecision>(m), HighPrecision(20));
+  ASSERT_EQ(d.phases.size(), h.phases.size());
+  for (std::size_t i = 0; i < d.phases.size(); ++i) {
+    EXPECT_EQ(d.phases[i].kind, h.phases[i].kind) << i;
+    EXPECT_LT(ulps(d.phases[i].t_end, static_cast<long double>(h.phases[i].t_end)), 4) << i;
+  }
+}
+
+}  // namespace
+}  // namespace frictionref
