@@ -95,6 +95,55 @@ TEST(ExactEngine, RejectsMotionOutsideTheRangeOfDouble) {
   EXPECT_NO_THROW(ExactEngine(seed_model(0.3, 1e290), 1000.0));
 }
 
+// The other end (issue 12; tests/fuzz/corpus/engine/finding-stick-outside-band-
+// subnormal-scale): B/(m w^2) = 7e-304, below 2^-969, where positions and
+// velocities would be subnormal doubles; the engine gave sticks outside the
+// friction band. Refused, naming the largest force; a model at the boundary's
+// safe side runs.
+TEST(ExactEngine, RejectsMotionBelowTheRangeOfDouble) {
+  Model tiny;
+  tiny.mass = 65534;
+  tiny.amplitude = 2.0528951543397287e-289;
+  tiny.omega = 65536;
+  tiny.friction = 1.4246797912974851e-317;
+  tiny.x0 = 14848;
+  try {
+    ExactEngine engine(tiny, 0.018120148056899137);
+    ADD_FAILURE() << "accepted min(B/m, B/(m w), B/(m w^2)) = 7e-304";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "amplitude");
+    EXPECT_NE(e.rule().find("2^-969"), std::string::npos) << e.rule();
+  }
+  Model small = seed_model(0.3);
+  small.amplitude = 1e-280;  // B/(m w^2) = 1e-280 > 2^-969 = 2e-292
+  EXPECT_NO_THROW(ExactEngine(small, 10.0));
+}
+
+// Time scales the resolution (8 ulps of max(1, |w t|) / w) cannot resolve:
+// a natural frequency, a damping rate or a harmonic 1e10 times the span.
+TEST(ExactEngine, RejectsTimeScalesBelowTheResolution) {
+  const auto refused_parameter = [](const Model& m, double t_end) -> std::string {
+    try {
+      ExactEngine engine(m, t_end);
+    } catch (const InvalidInput& e) {
+      return e.parameter();
+    }
+    return "";
+  };
+  Model spring = seed_model(0.3);
+  spring.stiffness = 1e22;  // sqrt(k/m) = 1e11 rad per unit time, 1/w = 1
+  EXPECT_EQ(refused_parameter(spring, 1.0), "stiffness");
+  spring.stiffness = 1e18;  // 1e9 rad: resolved
+  EXPECT_EQ(refused_parameter(spring, 1.0), "");
+  Model damper = seed_model(0.3);
+  damper.damping = 1e11;
+  EXPECT_EQ(refused_parameter(damper, 1.0), "damping");
+  Model harmonic = seed_model(0.3);
+  harmonic.harmonics.push_back({0.5, 1e9, 0});  // 1e9 * 20 = 2e10 rad by t = 20
+  EXPECT_EQ(refused_parameter(harmonic, 20.0), "harmonics[0].omega");
+  EXPECT_EQ(refused_parameter(harmonic, 5.0), "");
+}
+
 TEST(ExactEngine, SummaryCountsAddUp) {
   const Solution s = solve(seed_model(0.7), 200.0);
   const Summary& sum = s.summary;

@@ -246,6 +246,52 @@ TEST(GeneralEngine, UndampedResonanceGrowsLinearly) {
   }
 }
 
+// Driven at resonance with a damping far too small to matter over the run
+// (c t^3 / m below 1e-17 of x), the motion is the undamped secular growth.
+// The textbook split into a steady response (amplitude B / (c w), up to
+// 1e323 here) and a transient cancelling it lost every digit (found by
+// fuzzing, tests/fuzz/corpus/engine/general-finding-resonance-light-damping).
+TEST(GeneralEngine, LightlyDampedResonanceIsTheSecularGrowth) {
+  for (double c : {1e-20, 1e-200, 4.9406564584124654e-324}) {
+    Model m;
+    m.mass = 1;
+    m.stiffness = 4;
+    m.omega = 2;
+    m.amplitude = 1;
+    m.friction = 0;
+    m.damping = c;
+    const Solution s = solve(m, 40.0);
+    ASSERT_EQ(s.summary.termination, Termination::reached_end) << c;
+    for (double t : {1.0, 7.5, 20.25, 39.0}) {
+      const long double wt = 2.0L * t;
+      const long double x = (std::sin(wt) - wt * std::cos(wt)) / 8;
+      EXPECT_NEAR(s.state_at(t).x, static_cast<double>(x), 1e-14 * (1 + t)) << c << " " << t;
+    }
+  }
+}
+
+// Near resonance with light damping (sigma = c / (2 m w) = 5e-7, |H| = 1e6):
+// y = -cos t / (2 sigma) + e^{-sigma t} (cos(nu t) / (2 sigma) + sin(nu t) / (2 nu)),
+// nu = sqrt(1 - sigma^2), from rest with R = 0, evaluated here in 50 digits
+// (the cancellation of 1e6 leaves 44).
+TEST(GeneralEngine, LightlyDampedNearResonanceKeepsItsDigits) {
+  using Wide = HighPrecision;
+  Model m;
+  m.stiffness = 1;
+  m.damping = 1e-6;
+  m.friction = 0;
+  const Solution s = solve(m, 60.0);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end);
+  const Wide sigma = Wide(m.damping) / 2;
+  const Wide nu = sqrt(1 - sigma * sigma);
+  for (double t : {0.5, 3.0, 17.0, 59.5}) {
+    const Wide tw(t);
+    const Wide y = -cos(tw) / (2 * sigma) +
+                   exp(-sigma * tw) * (cos(nu * tw) / (2 * sigma) + sin(nu * tw) / (2 * nu));
+    EXPECT_NEAR(s.state_at(t).x, static_cast<double>(y), 4e-16 * (1 + t)) << t;
+  }
+}
+
 // The 50-digit instantiation runs the same template for every model and agrees
 // with the double engine to the double engine's rounding.
 TEST(GeneralEngine, FiftyDigitInstanceAgrees) {

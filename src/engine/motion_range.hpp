@@ -91,4 +91,45 @@ void check_motion_scales(const BasicModel<Real>& model) {
                          "precision (docs/theory.md 4.12)");
 }
 
+// Throws InvalidInput if a time scale of the model other than the forcing's
+// is too short for the engine's time resolution, 8 ulps of max(1, |w t|) in
+// the forcing's phase, i.e. 8 eps max(1/w, |t|) in time: a harmonic's w_i,
+// the spring's natural sqrt(k/m) or the damper's rate c/m, times
+// T = max(1/w, |t0|, |t_end|), must stay below max_forcing_phase = 1e10
+// (the same bound the event loop puts on w t). Beyond it a velocity zero
+// would be resolved to worse than ~1e-5 of that time scale, or the motion's
+// fast transients would hide below the resolution.
+template <class Real, class Work>
+void check_time_scales(const BasicModel<Real>& model, const Real& t_end) {
+  using std::fabs;
+  using std::sqrt;
+  Work t = Work(1) / Work(model.omega);
+  for (const Work& candidate : {fabs(Work(model.t0)), fabs(Work(t_end))})
+    if (candidate > t) t = candidate;
+  const Work limit(MotionLimits::max_forcing_phase);
+  const std::string span = "max(1/w, |t0|, |t_end|) (here " + to_text(Real(t)) + ")";
+  for (std::size_t i = 0; i < model.harmonics.size(); ++i) {
+    const Work phase = Work(model.harmonics[i].omega) * t;
+    if (model.harmonics[i].amplitude != 0 && phase > limit)
+      throw InvalidInput("harmonics[" + std::to_string(i) + "].omega",
+                         to_text(model.harmonics[i].omega),
+                         "must satisfy w_i " + span + " <= 1e10 rad: the engine's time resolution "
+                         "(8 ulps of max(1, |w t|) / w) cannot resolve it (docs/theory.md 4.12)");
+  }
+  const Work natural = sqrt(Work(model.stiffness) / Work(model.mass)) * t;
+  if (natural > limit)
+    throw InvalidInput("stiffness", to_text(model.stiffness),
+                       "with this mass the natural frequency times " + span + " is " +
+                           to_text(Real(natural)) + " rad, above 1e10: the engine's time "
+                           "resolution (8 ulps of max(1, |w t|) / w) cannot resolve its "
+                           "oscillation (docs/theory.md 4.12)");
+  const Work rate = Work(model.damping) / Work(model.mass) * t;
+  if (rate > limit)
+    throw InvalidInput("damping", to_text(model.damping),
+                       "with this mass the damping rate c/m times " + span + " is " +
+                           to_text(Real(rate)) + ", above 1e10: the engine's time resolution "
+                           "(8 ulps of max(1, |w t|) / w) cannot resolve its transients "
+                           "(docs/theory.md 4.12)");
+}
+
 }  // namespace frictionref::detail

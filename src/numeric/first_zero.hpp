@@ -35,7 +35,7 @@ template <class Work>
 struct Jet {
   Work f = 0, d1 = 0, d2 = 0;   // f, f', f'' at the point
   Work e0 = 0, e1 = 0, e2 = 0;  // bounds of their rounding errors
-  Work tail = 0;                // the law's own data for its third-derivative bound
+  Work tail = 0, tail2 = 0;     // the law's own data for its third-derivative bound
 };
 
 template <class Work>
@@ -106,8 +106,12 @@ class FirstZeroSearch {
       if (slope_below_zero(j, m, h)) {  // f decreasing on [cur, b]
         const Jet<Work> jb = probe.jet(b);
         if (!(jb.f > 0)) return {true, cur, b, j, jb};
+        // Still positive: no zero up to b. Longer steps next (a slow decay
+        // towards zero, as an overdamped approach to equilibrium, would
+        // otherwise be walked at a fixed step until the step cap).
         cur = b;
         j = jb;
+        h *= 2;
         continue;
       }
       if (slope_above_zero(j, m, h)) {  // f increasing: no zero after f(cur) >= 0
@@ -125,6 +129,10 @@ class FirstZeroSearch {
           const Work te = extremum(probe, cur, b, falls_first);
           const Jet<Work> je = probe.jet(te);
           if (falls_first) {  // minimum at te
+            // Within rounding of 0 there: a tangency, taken at the minimum
+            // itself (a crossing in the noise would be up to sqrt(e0 / f'')
+            // early, where the force has not turned yet).
+            if (fabs(je.f) <= je.e0) return {true, te, te, je, je};
             if (!(je.f > 0)) return {true, cur, te, j, je};
           } else if (!(jb.f > 0)) {  // maximum at te, then falling to b
             return {true, te, b, je, jb};
@@ -132,6 +140,7 @@ class FirstZeroSearch {
         }
         cur = b;
         j = jb;
+        h *= 2;
         continue;
       }
       if (h <= resolution) {
@@ -140,7 +149,24 @@ class FirstZeroSearch {
         // the level of its noise near a tangency would otherwise be crossed
         // a resolution at a time). The bracket's hi may then have f > 0.
         const Jet<Work> jb = probe.jet(b);
-        if (!(jb.f > jb.e0)) return {true, cur, b, j, jb};
+        if (!(jb.f > jb.e0)) {
+          // Falling into the noise while convex: a tangency (v grazing 0)
+          // or a pair of zeros round a minimum. The minimum decides, not the
+          // first point in the noise (up to sqrt(e0 / f'') early, where the
+          // force has not yet turned): find it where f' changes sign.
+          if (jb.f > 0 && j.d1 < 0 && j.d2 - j.e2 > 0) {
+            const Work reach = cur + 2 * (-j.d1 / j.d2) + resolution;
+            const Work b2 = reach < end ? reach : end;
+            const Jet<Work> j2 = probe.jet(b2);
+            if (j2.d1 - j2.e1 > 0) {
+              const Work te = extremum(probe, cur, b2, true);
+              const Jet<Work> je = probe.jet(te);
+              if (fabs(je.f) <= je.e0) return {true, te, te, je, je};
+              if (je.f < 0) return {true, cur, te, j, je};
+            }
+          }
+          return {true, cur, b, j, jb};
+        }
         cur = b;
         j = jb;
         continue;

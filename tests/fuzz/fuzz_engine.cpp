@@ -307,11 +307,15 @@ long double net_force(const Model& m, double t, double x) {
 }
 
 // Tolerance of N at t: 1e-9 of the forces involved, plus the rounding of the
-// forcing phases at |t| (a stored time is rounded to double).
+// forcing phases at |t| (a stored time is rounded to double), plus this
+// oracle's own rounding of w_i t + phi_i in long double (the engine reduces
+// phi_i mod 2 pi exactly; net_force above does not).
 long double force_tolerance(const Model& m, const GeneralScales& g, double t, double x) {
   const long double scale = g.force + m.static_limit() + std::fabs(m.stiffness * x);
   const long double phase = 64 * kEps * std::fmax(1.0L, g.fast * std::fabs(t));
-  return 1e-9L * scale + phase * (g.force + std::fabs(m.stiffness * x));
+  long double oracle = 0;
+  for (const auto& h : m.harmonics) oracle += std::fabs(h.amplitude) * 4 * kEps * std::fabs(h.phase);
+  return 1e-9L * scale + phase * (g.force + std::fabs(m.stiffness * x)) + oracle;
 }
 
 long double speed_tolerance(const GeneralScales& g) { return 1e-9L * g.speed; }

@@ -51,6 +51,7 @@ class LinearOscillatorFamily {
                           m;
     check_motion_bounds(model, t_end, bounds, f_max / (m * Work(model.omega)), "F_max/(m w)");
     check_motion_scales<Real, Work>(model);
+    check_time_scales<Real, Work>(model, t_end);
     (void)tau0;
   }
 
@@ -254,6 +255,9 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   };
   Work blind = start.v == 0 ? blind_after_rest(at_from, Traits::time_resolution(from)) : Work(0);
   SlipEnd<Work> result;
+  // Touches that follow each other within 64 resolutions (no progress) are
+  // counted; a slip may touch v = 0 any number of times far apart (R = 0
+  // driven by a harmonic: once a period).
   for (int touches = 0;; ++touches) {
     if (touches > 64) throw SearchStalled{};  // touch after touch without progress
     if (blind > 0) at_from.f = 0;  // exactly: the slip starts (or goes on) from v = 0
@@ -287,6 +291,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       ++summary_->touches;
       at_from = law.jet(law.point(root));  // with its rounding bounds
       blind = blind_after_rest(at_from, res);
+      if (root > from + 64 * res) touches = 0;
       from = root > from ? root : Work(from + res);
       continue;
     }

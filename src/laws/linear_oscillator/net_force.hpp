@@ -101,8 +101,12 @@ class NetForce {
       phase_n += fabs(term.a) * (term.q * tau_max + 2 * fabs(term.phase));
     }
     const Work e_n = kUlps * eps * mag_n + eps * phase_n;
+    // f = rs^2 - n^2 errs by 2 |n| e_n + e_n^2 and its own rounding: |n| from
+    // its bound, not from the magnitudes summed (an offset f0 - rho^2 y near
+    // an equilibrium is small while f0 and rho^2 y are not).
     const Work rs = o_->rs();
-    return (rs + mag_n) * e_n * 2 + 4 * eps * (rs + mag_n) * (rs + mag_n);
+    const Work n = magnitude_bound() + e_n;
+    return (rs + n) * e_n * 2 + 4 * eps * (rs + n) * (rs + n);
   }
 
  private:

@@ -5,27 +5,20 @@
 //   at rest:         n(tau) = g(tau) - rho^2 y,  stuck while |n| <= rs,
 //
 // sigma = c / (2 m w), rho^2 = k / (m w^2), r = R / (m w), rs = Rs / (m w),
-// g from forcing.hpp. Also the steady response of each harmonic:
-// y_p = a Im(H e^{i theta}), H = 1 / (rho^2 - q^2 + 2 i sigma q), or, at
-// resonance (sigma = 0, q^2 = rho^2, where H is infinite), the secular
-// y_p = -a u cos(theta) / (2 q) with u the time since the phase began.
+// g from forcing.hpp, and each harmonic's response from rest
+// (forced_response.hpp).
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "frictionref/model.hpp"
+#include "laws/linear_oscillator/forced_response.hpp"
 #include "laws/linear_oscillator/forcing.hpp"
 #include "laws/linear_oscillator/transition.hpp"
 
 namespace frictionref::detail {
-
-template <class Work>
-struct HarmonicResponse {
-  Work re = 0, im = 0;  // H = re + i im (0 at resonance)
-  Work size = 0;        // |H| (0 at resonance)
-  bool resonant = false;
-};
 
 template <class Work>
 class Oscillator {
@@ -39,23 +32,16 @@ class Oscillator {
         rs_(Work(model.static_limit()) / (Work(model.mass) * Work(model.omega))),
         forcing_(model),
         transition_(sigma_, rho2_) {
-    using std::sqrt;
+    using std::fabs;
+    using std::pow;
     for (const auto& term : forcing_.terms()) {
-      HarmonicResponse<Work> h;
-      const Work real = rho2_ - term.q * term.q;
-      const Work imag = 2 * sigma_ * term.q;
-      const Work d = real * real + imag * imag;
-      if (d == 0) {
-        h.resonant = true;
-      } else {
-        h.re = real / d;
-        h.im = -imag / d;
-        h.size = 1 / sqrt(d);
-      }
-      responses_.push_back(h);
-      using std::fabs;
-      using std::pow;
-      if (!h.resonant) steady_bound4_ += fabs(term.a) * h.size * Work(pow(term.q, 4));
+      responses_.emplace_back(term.q, transition_);
+      // H = 1 / (rho^2 - q^2 + 2 i sigma q); infinite at resonance.
+      const Complex<Work> p{rho2_ - term.q * term.q, 2 * sigma_ * term.q};
+      const bool resonant = p.re == 0 && p.im == 0;
+      steady_.push_back(resonant ? Complex<Work>{} : Complex<Work>{1, 0} / p);
+      if (resonant) steady_bound4_ = std::numeric_limits<Work>::infinity();
+      else steady_bound4_ += fabs(term.a) * steady_.back().abs() * Work(pow(term.q, 4));
     }
   }
 
@@ -65,16 +51,21 @@ class Oscillator {
   const Work& r() const { return r_; }
   const Work& rs() const { return rs_; }
   const Forcing<Work>& forcing() const { return forcing_; }
-  const std::vector<HarmonicResponse<Work>>& responses() const { return responses_; }
+  // One per forcing term, in the same order.
+  const std::vector<ForcedResponse<Work>>& responses() const { return responses_; }
   const TransitionFunctions<Work>& transition() const { return transition_; }
-  // sum over non-resonant terms of |a| |H| q^4: bounds |v_p'''| of their steady response.
+  // Each harmonic's steady response H (0 at resonance), and
+  // sum |a| |H| q^4 >= |v_p'''| (infinite at resonance): only for bounds,
+  // the motion itself is computed without H (forced_response.hpp).
+  const std::vector<Complex<Work>>& steady() const { return steady_; }
   const Work& steady_bound4() const { return steady_bound4_; }
 
  private:
   Work omega_, sigma_, rho2_, r_, rs_;
   Forcing<Work> forcing_;
-  std::vector<HarmonicResponse<Work>> responses_;
   TransitionFunctions<Work> transition_;
+  std::vector<ForcedResponse<Work>> responses_;
+  std::vector<Complex<Work>> steady_;
   Work steady_bound4_ = 0;
 };
 

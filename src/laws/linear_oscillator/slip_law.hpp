@@ -1,24 +1,32 @@
 // A slip of the linear oscillator in closed form (docs/theory.md 7.2, 7.3).
 //
-// From (y_a, v_a) at tau_a, with y_p the steady response to the harmonics
-// (oscillator.hpp) and the homogeneous transition functions (transition.hpp):
+// From (y_a, v_a) at tau_a, with the homogeneous transition functions
+// (transition.hpp) and each harmonic's response from rest R_j
+// (forced_response.hpp), at u = tau - tau_a:
 //
-//   y(tau) = y_p(tau) + Phi11 (y_a - y_p(tau_a)) + G (v_a - v_p(tau_a)) + g0 G1
-//   v(tau) = v_p(tau) - rho^2 G (y_a - y_p(tau_a)) + G' (v_a - v_p(tau_a)) + g0 G
+//   y(tau) = Phi11 y_a + G v_a + g0 G1 + sum_j Im(A_j R_j(u))
+//   v(tau) = -rho^2 G y_a + G' v_a + g0 G + sum_j Im(A_j R_j'(u))
 //
-// with g0 = f0 - s r and G, G', Phi11, G1 at u = tau - tau_a. Higher
-// derivatives follow from the ODE. For the event search (first_zero.hpp) the
-// law also gives a rigorous bound of |v'''| on [tau, tau + h]: v''' = v_p'''
-// + z_h', where z_h = v'' - v_p'' solves the homogeneous equation (the
-// constant forcing drops out after two derivatives), whose energy
-// rho^2 z_h^2 + z_h'^2 never grows (d/dtau = -4 sigma z_h'^2 <= 0); so
-// |z_h'| <= sqrt(rho^2 z_h(tau)^2 + z_h'(tau)^2) for all later times.
+// with g0 = f0 - s r and A_j = a_j e^{i theta_j(tau_a)}. Higher derivatives
+// follow from the same closed forms. For the event search (first_zero.hpp)
+// the law also bounds |v'''| on [tau, tau + h] rigorously, by the smaller of:
+//  (A) w = v' solves w'' + 2 sigma w' + rho^2 w = g'', so S = sqrt(w'^2 +
+//      rho^2 w^2) grows at most at rate |g''| <= G2 = sum |a_j| q_j^2, and
+//      |v'''| = |g'' - 2 sigma w' - rho^2 w| <= G2 + (2 sigma + rho)(S(tau) + h G2)
+//      (good near resonance and for light damping);
+//  (B) v''' = v_p''' + z_h' with v_p the steady response (|v_p'''| <= sum
+//      |a| |H| q^4) and z_h = v'' - v_p'' a free motion, whose energy
+//      rho^2 z_h^2 + z_h'^2 never grows, so |z_h'| stays below its value at
+//      tau (good for heavy damping, where (A)'s 2 sigma is huge; infinite at
+//      exact resonance).
 #pragma once
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "laws/linear_oscillator/oscillator.hpp"
+#include "numeric/complex.hpp"
 #include "numeric/first_zero.hpp"
 #include "numeric/sin_cos.hpp"
 
@@ -33,19 +41,24 @@ class LinearSlipLaw {
     Work y = 0, v = 0;            // y = w x, v
     Work d1 = 0, d2 = 0, d3 = 0;  // dv/dtau, d2v/dtau2, d3v/dtau3
     Work e_y = 0, e_v = 0, e_d1 = 0, e_d2 = 0, e_d3 = 0;  // rounding-error bounds
-    Work tail = 0;  // sup over later times of |v''' - v_p'''| (homogeneous part)
+    Work tail = 0;   // (A): S = sqrt(v''^2 + rho^2 v'^2) plus rounding
+    Work tail2 = 0;  // (B): sup of |z_h'| from tau on, plus rounding
   };
 
   LinearSlipLaw(const Oscillator<Work>& oscillator, int sign, const Work& tau_a, const Work& y_a,
                 const Work& v_a)
       : o_(&oscillator), s_(sign), tau_a_(tau_a), y_a_(y_a), v_a_(v_a) {
     using std::fabs;
+    using std::sqrt;
     g0_ = o_->forcing().constant() - Work(s_) * o_->r();
-    Steady at_start = steady(tau_a);
-    dy_ = y_a - at_start.y;
-    dv_ = v_a - at_start.v;
-    mag_dy_ = fabs(y_a) + at_start.mag_y;
-    mag_dv_ = fabs(v_a) + at_start.mag_v;
+    rho_ = sqrt(o_->rho2());
+    for (const ForcingTerm<Work>& f : o_->forcing().terms()) {
+      const Work theta = f.q * tau_a + f.phase;
+      const SinCos<Work> sc = sin_cos(theta);
+      // Im(A e^{i q u}) = a sin(theta + q u); theta is rounded by up to
+      // |theta| + |phase| ulps (radians per ulp).
+      terms_.push_back({{f.a * sc.cos, f.a * sc.sin}, fabs(theta) + fabs(f.phase)});
+    }
   }
 
   int sign() const { return s_; }
@@ -64,58 +77,115 @@ class LinearSlipLaw {
     using std::sqrt;
     const Work eps = std::numeric_limits<Work>::epsilon();
     const Work rho2 = o_->rho2();
-    const Work sigma = o_->sigma();
-    const Transition<Work> t = o_->transition().at(tau - tau_a_);
-    const Steady p = steady<kBounds>(tau);
-    Point q;
-    q.tau = tau;
-    q.y = p.y + t.phi11 * dy_ + t.g * dv_ + g0_ * t.g1;
-    q.v = p.v - rho2 * t.g * dy_ + t.dg * dv_ + g0_ * t.g;
-    q.d1 = p.g - Work(s_) * o_->r() - 2 * sigma * q.v - rho2 * q.y;
-    q.d2 = p.dg - 2 * sigma * q.d1 - rho2 * q.v;
-    q.d3 = p.d2g - 2 * sigma * q.d2 - rho2 * q.d1;
-    if constexpr (!kBounds) return q;
+    const Work u = tau - tau_a_;
+    const Transition<Work> t = o_->transition().at(u);
+    const auto& forcing = o_->forcing().terms();
+    const auto& responses = o_->responses();
+    Complex<Work> root_exp;
+    bool have_root_exp = false;
+    // The harmonics' part of y, v, v', v'' (sums of Im(A R^(k))), with
+    // magnitudes and argument-rounding terms.
+    Work forced[5] = {0, 0, 0, 0, 0}, mag_forced[5] = {0, 0, 0, 0, 0};
+    Work phase[5] = {0, 0, 0, 0, 0};
+    // The steady response's v_p'' and v_p''' (for bound (B)), with magnitudes.
+    Work steady2 = 0, steady3 = 0, mag_steady2 = 0, mag_steady3 = 0;
+    for (std::size_t i = 0; i < forcing.size(); ++i) {
+      const Work q = forcing[i].q;
+      const SinCos<Work> sc = sin_cos(q * u);
+      const Complex<Work> e{sc.cos, sc.sin};
+      const ForcedResponse<Work>& response = responses[i];
+      if (!have_root_exp && response.needs_root_exp(u)) {
+        root_exp = o_->transition().root_exp(u);
+        have_root_exp = true;
+      }
+      const HarmonicResponseAt<Work> h = response.at(u, t, e, root_exp);
+      // R^(n+1) = i q R^(n) + G^(n) (the derivative of R' = i q R + G), not
+      // the ODE of R: heavily damped, -2 sigma R' would cancel e^{i q u} to
+      // rounding noise of the fast root's size.
+      const Complex<Work> iq{0, q};
+      const Complex<Work> d2r = iq * h.dr + Complex<Work>{t.dg, 0};
+      const Complex<Work> d3r = iq * d2r + Complex<Work>{t.g2, 0};
+      const Complex<Work> d4r = iq * d3r + Complex<Work>{t.g3, 0};
+      const Complex<Work>& a = terms_[i].a;
+      forced[0] += (a * h.r).im;
+      forced[1] += (a * h.dr).im;
+      forced[2] += (a * d2r).im;
+      forced[3] += (a * d3r).im;
+      forced[4] += (a * d4r).im;
+      if constexpr (kBounds) {
+        const Work abs_a = fabs(forcing[i].a);
+        const Work mag_d2r = q * h.mag_dr + t.mag_dg;
+        const Work mag_d3r = q * mag_d2r + t.mag_g2;
+        const Work mag_d4r = q * mag_d3r + t.mag_g3;
+        const Work mags[5] = {h.mag_r, h.mag_dr, mag_d2r, mag_d3r, mag_d4r};
+        // A's argument theta(tau_a) is rounded by up to `arg` ulps.
+        const Work arg = terms_[i].arg, qu = q * u;
+        for (int k = 0; k < 5; ++k) {
+          mag_forced[k] += abs_a * mags[k];
+          phase[k] += abs_a * mags[k] * arg;
+        }
+        // v_p = Im(A H i q e^{i q u}): v_p'' = Im(-i q^3 A H e), v_p''' = Im(q^4 A H e).
+        const Complex<Work> ahe = a * o_->steady()[i] * e;
+        const Work q3 = q * q * q, size = abs_a * o_->steady()[i].abs();
+        steady2 -= q3 * ahe.re;
+        steady3 += q3 * q * ahe.im;
+        mag_steady2 += size * q3 * (1 + arg + qu);
+        mag_steady3 += size * q3 * q * (1 + arg + qu);
+      }
+    }
+    // The homogeneous part's derivatives from those of G (transition.hpp),
+    // not from the ODE with the whole forcing:
+    // while the motion decays towards an equilibrium (an overdamped
+    // approach) they keep their relative accuracy, where g - rho^2 y would
+    // cancel to rounding noise of the force and stall the event search.
+    const Work &g2 = t.g2, &g3 = t.g3, &g4 = t.g4;
+    Point p;
+    p.tau = tau;
+    p.y = t.phi11 * y_a_ + t.g * v_a_ + g0_ * t.g1 + forced[0];
+    p.v = -rho2 * t.g * y_a_ + t.dg * v_a_ + g0_ * t.g + forced[1];
+    p.d1 = -rho2 * t.dg * y_a_ + g2 * v_a_ + g0_ * t.dg + forced[2];
+    p.d2 = -rho2 * g2 * y_a_ + g3 * v_a_ + g0_ * g2 + forced[3];
+    p.d3 = -rho2 * g3 * y_a_ + g4 * v_a_ + g0_ * g3 + forced[4];
+    if constexpr (!kBounds) return p;
     // Rounding: kUlps ulps of the sum of the terms' magnitudes, plus the
-    // rounding of the harmonics' arguments q tau + phi (p.phase_*).
-    const Work mag_y =
-        p.mag_y + t.mag_phi11 * mag_dy_ + t.mag_g * mag_dv_ + fabs(g0_) * t.mag_g1;
-    const Work mag_v =
-        p.mag_v + rho2 * t.mag_g * mag_dy_ + t.mag_dg * mag_dv_ + fabs(g0_) * t.mag_g;
-    const Work mag_d1 = p.mag_g + o_->r() + 2 * sigma * mag_v + rho2 * mag_y;
-    const Work mag_d2 = p.mag_dg + 2 * sigma * mag_d1 + rho2 * mag_v;
-    const Work mag_d3 = p.mag_d2g + 2 * sigma * mag_d2 + rho2 * mag_d1;
+    // rounding of the harmonics' arguments (phase).
+    const Work &mag_g2 = t.mag_g2, &mag_g3 = t.mag_g3, &mag_g4 = t.mag_g4;
+    const Work ay = fabs(y_a_), av = fabs(v_a_), a0 = fabs(g0_);
+    const Work mag_y = t.mag_phi11 * ay + t.mag_g * av + a0 * t.mag_g1 + mag_forced[0];
+    const Work mag_v = rho2 * t.mag_g * ay + t.mag_dg * av + a0 * t.mag_g + mag_forced[1];
+    const Work mag_d1 = rho2 * t.mag_dg * ay + mag_g2 * av + a0 * t.mag_dg + mag_forced[2];
+    const Work mag_d2 = rho2 * mag_g2 * ay + mag_g3 * av + a0 * mag_g2 + mag_forced[3];
+    const Work mag_d3 = rho2 * mag_g3 * ay + mag_g4 * av + a0 * mag_g3 + mag_forced[4];
     const Work k = kUlps * eps;
-    q.e_y = k * mag_y + eps * p.phase_y;
-    q.e_v = k * mag_v + eps * p.phase_v;
-    q.e_d1 = k * mag_d1 + eps * (p.phase_g + 2 * sigma * p.phase_v + rho2 * p.phase_y);
-    q.e_d2 = k * mag_d2 + eps * (p.phase_dg + 2 * sigma * p.phase_g + rho2 * p.phase_v);
-    q.e_d3 = k * mag_d3 + eps * (p.phase_d2g + 2 * sigma * p.phase_dg + rho2 * p.phase_g);
-    // The homogeneous part of v'' (z_h) and v''' (z_h'), with their errors.
-    const Work z = fabs(q.d2 - p.d2v) + q.e_d2 + k * p.mag_d2v;
-    const Work dz = fabs(q.d3 - p.d3v) + q.e_d3 + k * p.mag_d3v;
-    q.tail = sqrt(rho2 * z * z + dz * dz) * (1 + 16 * eps);
-    return q;
+    p.e_y = k * mag_y + eps * phase[0];
+    p.e_v = k * mag_v + eps * phase[1];
+    p.e_d1 = k * mag_d1 + eps * phase[2];
+    p.e_d2 = k * mag_d2 + eps * phase[3];
+    p.e_d3 = k * mag_d3 + eps * phase[4];
+    // S = sqrt(w'^2 + rho^2 w^2) at tau, w = v' (see the top of this file).
+    const Work w = fabs(p.d1) + p.e_d1, dw = fabs(p.d2) + p.e_d2;
+    p.tail = sqrt(dw * dw + rho2 * w * w) * (1 + 16 * eps);
+    // (B): z_h = v'' - v_p'', z_h' = v''' - v_p''' at tau.
+    const Work z = fabs(p.d2 - steady2) + p.e_d2 + k * mag_steady2;
+    const Work dz = fabs(p.d3 - steady3) + p.e_d3 + k * mag_steady3;
+    p.tail2 = sqrt(rho2 * z * z + dz * dz) * (1 + 16 * eps);
+    return p;
   }
 
  public:
   // The jet of f = s v at a point, for the event search.
   Jet<Work> jet(const Point& q) const {
     const Work s(s_);
-    return {s * q.v, s * q.d1, s * q.d2, q.e_v, q.e_d1, q.e_d2, q.tail};
+    return {s * q.v, s * q.d1, s * q.d2, q.e_v, q.e_d1, q.e_d2, q.tail, q.tail2};
   }
 
-  // >= sup |f'''| on [tau, tau + h], given the point at tau.
+  // >= sup |f'''| on [tau, tau + h], given the point at tau (with bounds).
   Work third_bound(const Work& tau, const Jet<Work>& at, const Work& h) const {
-    using std::fabs;
-    Work bound = o_->steady_bound4() + at.tail;
-    const Work u_end = tau + h - tau_a_;
-    const auto& terms = o_->forcing().terms();
-    for (std::size_t i = 0; i < terms.size(); ++i) {
-      if (!o_->responses()[i].resonant) continue;
-      const Work q = terms[i].q;
-      bound += fabs(terms[i].a) * (2 * q * q + q * q * q * fabs(u_end) / 2);
-    }
-    return bound * (1 + 64 * std::numeric_limits<Work>::epsilon());
+    (void)tau;
+    const Work g2 = o_->forcing().bound(2);
+    const Work a = g2 + (2 * o_->sigma() + rho_) * (at.tail + h * g2);
+    const Work b = o_->steady_bound4() + at.tail2;
+    return (b < a ? b : a) * (1 + 64 * std::numeric_limits<Work>::epsilon());
   }
 
   // Acceleration dv/dt = w dv/dtau.
@@ -124,98 +194,17 @@ class LinearSlipLaw {
  private:
   static constexpr int kUlps = 64;
 
-  // The steady response to the harmonics at tau, the forcing g and its first
-  // two derivatives, v_p'' and v_p''' (for the tail), with magnitudes.
-  struct Steady {
-    Work y = 0, v = 0, d2v = 0, d3v = 0;
-    Work g = 0, dg = 0, d2g = 0;
-    Work mag_y = 0, mag_v = 0, mag_d2v = 0, mag_d3v = 0;
-    Work mag_g = 0, mag_dg = 0, mag_d2g = 0;
-    // Errors from the argument rounding, per ulp (|q tau| + |phi| times the slope).
-    Work phase_y = 0, phase_v = 0, phase_g = 0, phase_dg = 0, phase_d2g = 0;
+  struct Term {
+    Complex<Work> a;  // a e^{i theta(tau_a)}
+    Work arg;         // ulps of rounding in theta(tau_a), in radians per ulp
   };
-
-  template <bool kBounds = true>
-  Steady steady(const Work& tau) const {
-    using std::fabs;
-    Steady p;
-    p.g = o_->forcing().constant();
-    if constexpr (kBounds) p.mag_g = fabs(p.g);
-    const Work u = tau - tau_a_;
-    const auto& terms = o_->forcing().terms();
-    const auto& responses = o_->responses();
-    for (std::size_t i = 0; i < terms.size(); ++i) {
-      const ForcingTerm<Work>& f = terms[i];
-      const HarmonicResponse<Work>& h = responses[i];
-      const Work theta = f.q * tau + f.phase;
-      const SinCos<Work> sc = sin_cos(theta);
-      const Work a = f.a, q = f.q, abs_a = fabs(a);
-      const Work q2 = q * q, q3 = q2 * q, q4 = q2 * q2;
-      p.g += a * sc.sin;
-      p.dg += a * q * sc.cos;
-      p.d2g -= a * q2 * sc.sin;
-      if constexpr (!kBounds) {
-        if (!h.resonant) {
-          const Work sin_part = a * h.re * sc.sin + a * h.im * sc.cos;
-          const Work cos_part = a * h.re * sc.cos - a * h.im * sc.sin;
-          p.y += sin_part;
-          p.v += q * cos_part;
-        } else {
-          const Work c = a / (2 * q);
-          p.y -= c * u * sc.cos;
-          p.v -= c * (sc.cos - u * q * sc.sin);
-        }
-        continue;
-      }
-      p.mag_g += abs_a;
-      p.mag_dg += abs_a * q;
-      p.mag_d2g += abs_a * q2;
-      // The argument q tau + phi is rounded by up to |theta| ulps (radians per
-      // ulp): each value moves by its derivative in theta times that.
-      const Work arg = fabs(theta) + fabs(f.phase);
-      p.phase_g += abs_a * arg;
-      p.phase_dg += abs_a * q * arg;
-      p.phase_d2g += abs_a * q2 * arg;
-      if (!h.resonant) {
-        const Work in_phase = a * h.re, quadrature = a * h.im;  // y_p = A sin + C cos
-        const Work sin_part = in_phase * sc.sin + quadrature * sc.cos;
-        const Work cos_part = in_phase * sc.cos - quadrature * sc.sin;
-        p.y += sin_part;
-        p.v += q * cos_part;
-        p.d2v -= q3 * cos_part;
-        p.d3v += q4 * sin_part;
-        const Work size = abs_a * h.size;
-        p.mag_y += size;
-        p.mag_v += size * q;
-        p.mag_d2v += size * q3;
-        p.mag_d3v += size * q4;
-        p.phase_y += size * arg;
-        p.phase_v += size * q * arg;
-      } else {
-        // Y = -(a / 2q) u cos(theta), from the start of this slip.
-        const Work c = a / (2 * q);
-        p.y -= c * u * sc.cos;
-        p.v -= c * (sc.cos - u * q * sc.sin);
-        p.d2v += Work(3) / 2 * a * q * sc.cos - a * q2 * u / 2 * sc.sin;
-        p.d3v += -2 * a * q2 * sc.sin - a * q3 * u / 2 * sc.cos;
-        const Work au = abs_a * fabs(u);
-        p.mag_y += au / (2 * q);
-        p.mag_v += abs_a / (2 * q) + au / 2;
-        p.mag_d2v += Work(3) / 2 * abs_a * q + au * q2 / 2;
-        p.mag_d3v += 2 * abs_a * q2 + au * q3 / 2;
-        p.phase_y += au / 2 * arg;
-        p.phase_v += (abs_a / 2 + au * q / 2) * arg;
-      }
-    }
-    return p;
-  }
 
   const Oscillator<Work>* o_;
   int s_;
   Work tau_a_, y_a_, v_a_;
-  Work g0_ = 0;             // f0 - s r
-  Work dy_ = 0, dv_ = 0;    // the homogeneous part of the start state
-  Work mag_dy_ = 0, mag_dv_ = 0;
+  Work g0_ = 0;  // f0 - s r
+  Work rho_ = 0;
+  std::vector<Term> terms_;
 };
 
 }  // namespace frictionref::detail

@@ -32,6 +32,7 @@
 
 #include <boost/math/special_functions/expm1.hpp>
 
+#include "numeric/complex.hpp"
 #include "numeric/sin_cos.hpp"
 
 namespace frictionref::detail {
@@ -42,8 +43,17 @@ struct Transition {
   Work dg = 1;      // G'(u): v per unit initial velocity
   Work phi11 = 1;   // y per unit initial position
   Work g1 = 0;      // integral of G: y per unit constant forcing
+  Work g2 = 0, g3 = 0, g4 = 0;  // G'', G''', G''''
   // Magnitudes: each value's rounding error is a few ulps of these.
   Work mag_g = 0, mag_dg = 1, mag_phi11 = 1, mag_g1 = 0;
+  Work mag_g2 = 0, mag_g3 = 0, mag_g4 = 0;
+};
+
+// The characteristic roots of p^2 + 2 sigma p + rho^2: `near` is the one
+// nearer the positive imaginary axis (-sigma + i nu, or the slow -k1).
+template <class Work>
+struct RootPair {
+  Complex<Work> near, far;
 };
 
 template <class Work>
@@ -95,9 +105,29 @@ class TransitionFunctions {
   const Work& sigma() const { return sigma_; }
   const Work& rho2() const { return rho2_; }
 
+  RootPair<Work> roots() const {
+    if (underdamped_) return {{-sigma_, nu_}, {-sigma_, -nu_}};
+    return {{-k1_, 0}, {-k2_, 0}};
+  }
+
+  // e^{p u} for the near root (forced_response.hpp).
+  Complex<Work> root_exp(const Work& u) const {
+    using std::exp;
+    if (underdamped_) {
+      const Work e = exp(-sigma_ * u);
+      const SinCos<Work> sc = sin_cos(nu_ * u);
+      return {e * sc.cos, e * sc.sin};
+    }
+    return {Work(exp(-k1_ * u)), 0};
+  }
+
   // At u = tau - tau_a >= 0.
   Transition<Work> at(const Work& u) const {
-    if (u == 0) return Transition<Work>{};
+    if (u == 0) {  // G = 0, G' = 1 and the higher derivatives from the ODE
+      Transition<Work> t;
+      higher_by_ode(t);
+      return t;
+    }
     if (u * rate_ <= kSeriesLimit) return series(u);
     return underdamped_ ? underdamped(u) : overdamped(u);
   }
@@ -117,7 +147,7 @@ class TransitionFunctions {
       t.mag_dg = 1;
       t.mag_phi11 = 1;
       t.mag_g1 = t.g1;
-      return t;
+      return t;  // G'' = G''' = G'''' = 0
     }
     // Horner sums of the first N precomputed coefficients (c_n u^(n-1),
     // n >= 1), N the fewest this u needs.
@@ -140,6 +170,7 @@ class TransitionFunctions {
     t.mag_dg = 6;
     t.mag_phi11 = 6 + 6 * sigma_ * u;
     t.mag_g1 = 3 * u * u / 2;
+    higher_by_ode(t);
     return t;
   }
 
@@ -154,11 +185,26 @@ class TransitionFunctions {
     t.dg = e * (sc.cos - sigma_ * s);
     t.phi11 = e * (sc.cos + sigma_ * s);
     t.g1 = (1 - t.phi11) / rho2_;
-    t.mag_g = fabs(t.g) + e * fabs(s);
-    t.mag_dg = e * (fabs(sc.cos) + sigma_ * fabs(s));
+    // The arguments sigma u and nu u are rounded by up to their size in ulps:
+    // exp and sin(nu u) / nu move by sigma u |value| and u.
+    const Work arg = sigma_ * u + nu_ * u;
+    t.mag_g = (fabs(t.g) + e * fabs(s)) * (1 + sigma_ * u) + e * u;
+    t.mag_dg = e * (fabs(sc.cos) + sigma_ * fabs(s)) * (1 + arg) + e * sigma_ * u;
     t.mag_phi11 = t.mag_dg;
     t.mag_g1 = (1 + t.mag_phi11) / rho2_;
+    higher_by_ode(t);
     return t;
+  }
+
+  // G'' = -2 sigma G' - rho^2 G and so on: no cancellation beyond a small
+  // factor where the roots are complex (|p| = rho) or u |p| is small.
+  void higher_by_ode(Transition<Work>& t) const {
+    t.g2 = -2 * sigma_ * t.dg - rho2_ * t.g;
+    t.g3 = -2 * sigma_ * t.g2 - rho2_ * t.dg;
+    t.g4 = -2 * sigma_ * t.g3 - rho2_ * t.g2;
+    t.mag_g2 = 2 * sigma_ * t.mag_dg + rho2_ * t.mag_g;
+    t.mag_g3 = 2 * sigma_ * t.mag_g2 + rho2_ * t.mag_dg;
+    t.mag_g4 = 2 * sigma_ * t.mag_g3 + rho2_ * t.mag_g2;
   }
 
   Transition<Work> overdamped(const Work& u) const {
@@ -175,8 +221,10 @@ class TransitionFunctions {
     const Work even = (e1 + e2) / 2;  // cosh(mu u) exp(-sigma u)
     t.dg = even - sigma_ * t.g;
     t.phi11 = even + sigma_ * t.g;
-    t.mag_g = fabs(t.g);
-    t.mag_dg = even + sigma_ * t.mag_g;
+    // exp(-k u) moves by k u |value| when its argument is rounded.
+    const Work arg = k2_ * u;
+    t.mag_g = fabs(t.g) * (1 + arg);
+    t.mag_dg = even * (1 + arg) + sigma_ * t.mag_g;
     t.mag_phi11 = t.mag_dg;
     // (1 - Phi11) / rho^2 unless Phi11 is near 1 with the rates well apart
     // (a slow overdamped root, or rho = 0).
@@ -189,8 +237,18 @@ class TransitionFunctions {
       const Work p1 = phi1(-k1_ * u);
       const Work p2 = phi1(-k2_ * u);
       t.g1 = u * (p1 - p2) / (2 * mu_);
-      t.mag_g1 = u * (fabs(p1) + fabs(p2)) / (2 * mu_);
+      t.mag_g1 = u * (fabs(p1) + fabs(p2)) / (2 * mu_) * (1 + arg);
     }
+    // G^(n+1) = -k1 G^(n) + (-k2)^n e2 (from G = (e1 - e2) / (k2 - k1)):
+    // exact in relative terms on the slow tail, where the ODE's form
+    // -2 sigma G' - rho^2 G would cancel (2 sigma k1 ~ rho^2 when heavily
+    // overdamped) and lose everything to the fast root's scale.
+    t.g2 = -k1_ * t.dg - k2_ * e2;
+    t.g3 = -k1_ * t.g2 + k2_ * k2_ * e2;
+    t.g4 = -k1_ * t.g3 - k2_ * k2_ * k2_ * e2;
+    t.mag_g2 = (k1_ * t.mag_dg + k2_ * e2) * (1 + arg);
+    t.mag_g3 = (k1_ * t.mag_g2 + k2_ * k2_ * e2) * (1 + arg);
+    t.mag_g4 = (k1_ * t.mag_g3 + k2_ * k2_ * k2_ * e2) * (1 + arg);
     return t;
   }
 
