@@ -91,7 +91,8 @@ class NetForce {
     return fabs(offset_) + o_->forcing().bound(0);
   }
 
-  // >= the rounding-error bound e0 of the jet of f anywhere with |tau| <= tau_max.
+  // >= the rounding-error bound e0 of the jet of f wherever |n| is within
+  // rounding of rs, for |tau| <= tau_max.
   Work value_error_bound(const Work& tau_max) const {
     using std::fabs;
     const Work eps = std::numeric_limits<Work>::epsilon();
@@ -101,11 +102,13 @@ class NetForce {
       phase_n += fabs(term.a) * (term.q * tau_max + 2 * fabs(term.phase));
     }
     const Work e_n = kUlps * eps * mag_n + eps * phase_n;
-    // f = rs^2 - n^2 errs by 2 |n| e_n + e_n^2 and its own rounding: |n| from
-    // its bound, not from the magnitudes summed (an offset f0 - rho^2 y near
-    // an equilibrium is small while f0 and rho^2 y are not).
+    // f = rs^2 - n^2 errs by 2 |n| e_n + e_n^2 and its own rounding. The
+    // bound only matters where f is near 0, i.e. |n| within e_n of rs: not
+    // the largest |n| (a slow harmonic of huge amplitude, or an offset f0
+    // balanced by rho^2 y, would make the margin far larger than the
+    // rounding at the crossing and delay the breakaway: found by fuzzing).
     const Work rs = o_->rs();
-    const Work n = magnitude_bound() + e_n;
+    const Work n = rs + e_n;
     return (rs + n) * e_n * 2 + 4 * eps * (rs + n) * (rs + n);
   }
 
