@@ -176,8 +176,8 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
     j.f += margin;
     return j;
   };
-  auto search = probe(shifted, [&net](const Work&, const Jet<Work>&, const Work&) {
-    return net.third_bound();
+  auto search = probe(shifted, [&net](const Work&, const Jet<Work>& at, const Work& h) {
+    return net.third_bound(at, h);
   });
   const Work res = Traits::time_resolution(tau);
   const ZeroBracket<Work> bracket = Search::run(search, tau, search.jet(tau), tau_end_, res, res);
@@ -204,7 +204,8 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   if (!(crossing.at_lo.f > 0)) {
     root = crossing.lo;  // |N| reached Rs within rounding before the certain excess
   } else {
-    root = root_in(crossing, jet_unshifted, net.third_bound(), f, df);
+    root = root_in(crossing, jet_unshifted,
+                   net.third_bound(crossing.at_lo, crossing.hi - crossing.lo), f, df);
   }
   result.found = root < tau_end_;
   result.tau = root;

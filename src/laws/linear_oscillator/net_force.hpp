@@ -32,6 +32,7 @@ class NetForce {
     const Forcing<Work>& f = oscillator.forcing();
     mag_offset_ = fabs(oscillator.forcing().constant()) + oscillator.rho2() * fabs(y);
     const Work n0 = fabs(offset_) + f.bound(0);
+    n0_ = n0;
     third_ = 2 * (3 * f.bound(1) * f.bound(2) + n0 * f.bound(3)) *
              (1 + 64 * std::numeric_limits<Work>::epsilon());
   }
@@ -80,10 +81,25 @@ class NetForce {
     j.e0 = (rs + an) * p.e_n * 2 + 4 * eps * fabs(j.f);
     j.e1 = 2 * (a1 * p.e_n + an * p.e_d1) * 2 + 4 * eps * fabs(j.d1);
     j.e2 = 2 * (2 * a1 * p.e_d1 + a2 * p.e_n + an * p.e_d2) * 2 + 8 * eps * (a1 * a1 + an * a2);
+    j.tail = an + p.e_n;  // for third_bound: |n| here
     return j;
   }
 
+  // >= |f'''| everywhere.
   Work third_bound() const { return third_; }
+
+  // >= |f'''| on [tau, tau + h], given the jet at tau: |n| there grows by at
+  // most N1 h, which can be far below the global bound of |n| (a harmonic of
+  // huge amplitude and tiny frequency hardly moves over the horizon; its
+  // amplitude in N0 made the steps so short that the search hit its cap:
+  // found by fuzzing).
+  Work third_bound(const Jet<Work>& at, const Work& h) const {
+    const Forcing<Work>& f = o_->forcing();
+    const Work local = at.tail + f.bound(1) * h;
+    const Work n0 = local < n0_ ? local : n0_;
+    return 2 * (3 * f.bound(1) * f.bound(2) + n0 * f.bound(3)) *
+           (1 + 64 * std::numeric_limits<Work>::epsilon());
+  }
 
   // >= |n| everywhere: |f0 - rho^2 y| + sum |a|.
   Work magnitude_bound() const {
@@ -118,6 +134,7 @@ class NetForce {
   Work offset_;      // f0 - rho^2 y
   Work mag_offset_;  // |f0| + rho^2 |y|
   Work third_ = 0;   // >= |f'''| everywhere
+  Work n0_ = 0;      // >= |n| everywhere
 };
 
 }  // namespace frictionref::detail
