@@ -307,7 +307,7 @@ TEST(GeneralProperties, WorkEnergy) {
       const double spring = 0.5 * m.stiffness * (p.x_end * p.x_end - p.x_begin * p.x_begin);
       const double friction = sign * m.friction * (p.x_end - p.x_begin);
       const double residual = kinetic + spring - (work - friction - damper);
-      worst = std::fmax(worst, std::fabs(residual) / sc.energy);
+      worst = std::fmax(worst, static_cast<double>(std::fabs(residual) / sc.energy));
     }
     if (!(worst <= 1e-10))
       report.fail(i, m, c.t_end, "work-energy residual " + std::to_string(worst) + " of the energy scale");

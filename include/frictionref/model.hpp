@@ -102,6 +102,12 @@ struct BasicModel {
       require_finite((name + "omega").c_str(), harmonics[i].omega);
       require_finite((name + "phase").c_str(), harmonics[i].phase);
       if (!(harmonics[i].omega > 0)) fail((name + "omega").c_str(), harmonics[i].omega, "must be > 0");
+      // Beyond this the phase is reduced mod 2 pi to garbage (and means nothing:
+      // the same limit as for w t, docs/theory.md 4.9).
+      using std::fabs;
+      if (!(fabs(harmonics[i].phase) <= Real(1e10)))
+        fail((name + "phase").c_str(), harmonics[i].phase,
+             "must satisfy |PHI| <= 1e10 rad (a double cannot resolve a phase beyond that)");
     }
     require_finite("x0", x0);
     require_finite("v0", v0);

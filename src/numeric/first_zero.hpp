@@ -144,6 +144,12 @@ class FirstZeroSearch {
         continue;
       }
       if (h <= resolution) {
+        // (Never a step below the resolution, save the last one to `end`:
+        // b must move past cur.)
+        if (h < resolution && h < end - cur) {
+          h = resolution;
+          continue;
+        }
         // Nothing provable at the resolution: a sign test, where a value
         // within its rounding error of zero counts as zero (f hovering at
         // the level of its noise near a tangency would otherwise be crossed
