@@ -162,14 +162,13 @@ struct Report {
 std::string broken_law(const Model& m, double t_end, const Solution& s) {
   {
     const Scales sc = scales(m, t_end);
-    const GeneralModels::Case c{m, t_end};
     if (s.summary.termination != Termination::reached_end)
       return "termination " + std::string(to_string(s.summary.termination)) + ": " +
              s.summary.message;
     const long double force_tol = 1e-9L * sc.force, speed_tol = 1e-9L * sc.speed;
     const long double rs = m.static_limit();
     bool ok = !s.phases.empty() && s.phases.front().t_begin == m.t0 &&
-              s.phases.back().t_end == c.t_end;
+              s.phases.back().t_end == t_end;
     std::string what = ok ? "" : "does not span [t0, t_end]";
     for (std::size_t k = 0; ok && k < s.phases.size(); ++k) {
       const Phase& p = s.phases[k];

@@ -31,6 +31,7 @@
 
 #include "laws/linear_oscillator/transition.hpp"
 #include "numeric/complex.hpp"
+#include "numeric/series_reach.hpp"
 #include "numeric/sin_cos.hpp"
 
 namespace frictionref::detail {
@@ -48,8 +49,6 @@ class ForcedResponse {
  public:
   // q > 0: the harmonic's frequency; transition: the same oscillator's.
   ForcedResponse(const Work& q, const TransitionFunctions<Work>& transition) : q_(q) {
-    using std::fabs;
-    using std::pow;
     const Work sigma = transition.sigma(), rho2 = transition.rho2();
     const Complex<Work> iq{0, q};
     const RootPair<Work> roots = transition.roots();
@@ -63,15 +62,8 @@ class ForcedResponse {
     // |r_n| <= D^(n-2) / (2 (n-2)!) (the divided difference of z^n at three
     // points in the disc |z| <= D is a sum of C(n, 2) monomials of degree n-2),
     // so with x = u D <= 1/2 the tail after m = n - 2 = M is below
-    // eps u^2 / 64 once x^M / M! <= eps / 64.
-    const Work tiny = std::numeric_limits<Work>::epsilon() / 64;
-    Work factorial = 1;
-    int terms = 1;
-    for (;; ++terms) {
-      factorial *= Work(terms);
-      reach_.push_back(Work(pow(factorial * tiny, Work(1) / Work(terms))));
-      if (reach_.back() >= Work(kSeriesLimit)) break;
-    }
+    // eps u^2 / 64 once x^M / M! <= eps / 64 (series_reach.hpp).
+    const int terms = static_cast<int>(reach_.max_terms());
     std::vector<Complex<Work>> r(static_cast<std::size_t>(terms) + 3);
     Complex<Work> forcing{1, 0};  // (i q)^n / n!
     for (int n = 0; n + 2 < static_cast<int>(r.size()); ++n) {
@@ -95,8 +87,7 @@ class ForcedResponse {
     if (u == 0) return out;
     const Work x = u * reach_limit_;
     if (x <= Work(kSeriesLimit)) {
-      std::size_t n = 0;
-      while (n + 1 < reach_.size() && reach_[n] < x) ++n;
+      const std::size_t n = reach_.index_for(x);
       Complex<Work> sum;
       for (std::size_t i = n + 1; i-- > 0;) sum = sum * u + series_[i];
       out.r = sum * Work(u * u);
@@ -140,7 +131,7 @@ class ForcedResponse {
   Work abs_to_p2_ = 0;
   Work reach_limit_ = 0;              // D = max(q, |p1|, |p2|) (an upper bound of it)
   std::vector<Complex<Work>> series_;  // r_{m+2}, m = 0..M
-  std::vector<Work> reach_;            // the largest u D for which m <= i suffices
+  SeriesReach<Work> reach_{kSeriesLimit};  // how many terms u D needs
 };
 
 }  // namespace frictionref::detail

@@ -33,8 +33,6 @@ class NetForce {
     mag_offset_ = fabs(oscillator.forcing().constant()) + oscillator.rho2() * fabs(y);
     const Work n0 = fabs(offset_) + f.bound(0);
     n0_ = n0;
-    third_ = 2 * (3 * f.bound(1) * f.bound(2) + n0 * f.bound(3)) *
-             (1 + 64 * std::numeric_limits<Work>::epsilon());
   }
 
   Point point(const Work& tau) const {
@@ -85,9 +83,6 @@ class NetForce {
     return j;
   }
 
-  // >= |f'''| everywhere.
-  Work third_bound() const { return third_; }
-
   // >= |f'''| on [tau, tau + h], given the jet at tau: |n| there grows by at
   // most N1 h, which can be far below the global bound of |n| (a harmonic of
   // huge amplitude and tiny frequency hardly moves over the horizon; its
@@ -133,7 +128,6 @@ class NetForce {
   const Oscillator<Work>* o_;
   Work offset_;      // f0 - rho^2 y
   Work mag_offset_;  // |f0| + rho^2 |y|
-  Work third_ = 0;   // >= |f'''| everywhere
   Work n0_ = 0;      // >= |n| everywhere
 };
 

@@ -39,7 +39,7 @@ class LinearSlipLaw {
   struct Point {
     Work tau = 0;
     Work y = 0, v = 0;            // y = w x, v
-    Work d1 = 0, d2 = 0, d3 = 0;  // dv/dtau, d2v/dtau2, d3v/dtau3
+    Work d1 = 0, d2 = 0, d3 = 0;  // dv/dtau, d2v/dtau2, d3v/dtau3 (d3: with bounds only)
     Work e_y = 0, e_v = 0, e_d1 = 0, e_d2 = 0, e_d3 = 0;  // rounding-error bounds
     Work tail = 0;   // (A): S = sqrt(v''^2 + rho^2 v'^2) plus rounding
     Work tail2 = 0;  // (B): sup of |z_h'| from tau on, plus rounding
@@ -105,14 +105,14 @@ class LinearSlipLaw {
       const Complex<Work> iq{0, q};
       const Complex<Work> d2r = iq * h.dr + Complex<Work>{t.dg, 0};
       const Complex<Work> d3r = iq * d2r + Complex<Work>{t.g2, 0};
-      const Complex<Work> d4r = iq * d3r + Complex<Work>{t.g3, 0};
       const Complex<Work>& a = terms_[i].a;
       forced[0] += (a * h.r).im;
       forced[1] += (a * h.dr).im;
       forced[2] += (a * d2r).im;
       forced[3] += (a * d3r).im;
-      forced[4] += (a * d4r).im;
-      if constexpr (kBounds) {
+      if constexpr (kBounds) {  // v''' only for the bounds
+        const Complex<Work> d4r = iq * d3r + Complex<Work>{t.g3, 0};
+        forced[4] += (a * d4r).im;
         const Work abs_a = fabs(forcing[i].a);
         const Work mag_d2r = q * h.mag_dr + t.mag_dg;
         const Work mag_d3r = q * mag_d2r + t.mag_g2;
@@ -145,8 +145,8 @@ class LinearSlipLaw {
     p.v = -rho2 * t.g * y_a_ + t.dg * v_a_ + g0_ * t.g + forced[1];
     p.d1 = -rho2 * t.dg * y_a_ + g2 * v_a_ + g0_ * t.dg + forced[2];
     p.d2 = -rho2 * g2 * y_a_ + g3 * v_a_ + g0_ * g2 + forced[3];
-    p.d3 = -rho2 * g3 * y_a_ + g4 * v_a_ + g0_ * g3 + forced[4];
     if constexpr (!kBounds) return p;
+    p.d3 = -rho2 * g3 * y_a_ + g4 * v_a_ + g0_ * g3 + forced[4];
     // Rounding: kUlps ulps of the sum of the terms' magnitudes, plus the
     // rounding of the harmonics' arguments (phase).
     const Work &mag_g2 = t.mag_g2, &mag_g3 = t.mag_g3, &mag_g4 = t.mag_g4;

@@ -33,6 +33,7 @@
 #include <boost/math/special_functions/expm1.hpp>
 
 #include "numeric/complex.hpp"
+#include "numeric/series_reach.hpp"
 #include "numeric/sin_cos.hpp"
 
 namespace frictionref::detail {
@@ -77,17 +78,9 @@ class TransitionFunctions {
     // c_{n+2} = -(2 sigma (n+1) c_{n+1} + rho^2 c_n) / ((n+1)(n+2)).
     // |c_n| <= rate^(n-1) / (n-1)!, so with x = u rate <= kSeriesLimit the
     // terms after c_N u^N are below eps |G| / 64 once x^N / N! <= eps / 64;
-    // reach_[N] is the largest x for which N terms are enough.
+    // (series_reach.hpp).
     if (rate_ > 0) {
-      using std::pow;
-      const Work tiny = std::numeric_limits<Work>::epsilon() / 64;
-      Work factorial = 1;
-      int terms = 1;
-      for (;; ++terms) {
-        factorial *= Work(terms);
-        reach_.push_back(Work(pow(factorial * tiny, Work(1) / Work(terms))));
-        if (reach_.back() >= Work(kSeriesLimit)) break;
-      }
+      const int terms = static_cast<int>(reach_.max_terms());
       std::vector<Work> c(static_cast<std::size_t>(terms) + 2, Work(0));
       c[1] = 1;
       for (int n = 0; n + 2 <= terms; ++n)
@@ -151,9 +144,7 @@ class TransitionFunctions {
     }
     // Horner sums of the first N precomputed coefficients (c_n u^(n-1),
     // n >= 1), N the fewest this u needs.
-    const Work x = u * rate_;
-    std::size_t n = 0;
-    while (n + 1 < reach_.size() && reach_[n] < x) ++n;
+    const std::size_t n = reach_.index_for(u * rate_);
     Work g = 0, dg = 0, g1 = 0;
     for (std::size_t i = n + 1; i-- > 0;) {
       g = g * u + g_[i];
@@ -264,8 +255,9 @@ class TransitionFunctions {
   Work mu_ = 0;           // overdamped: sqrt(sigma^2 - rho^2)
   Work k1_ = 0, k2_ = 0;  // decay rates sigma -+ mu
   // Series coefficients, index i for n = i + 1: c_n, n c_n, c_n / (n + 1);
-  // reach_[i]: the largest u rate for which the terms up to n = i + 1 suffice.
-  std::vector<Work> g_, dg_, g1_, reach_;
+  // reach_: how many of them u rate needs.
+  std::vector<Work> g_, dg_, g1_;
+  SeriesReach<Work> reach_{kSeriesLimit};
 };
 
 }  // namespace frictionref::detail
