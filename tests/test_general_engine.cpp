@@ -311,5 +311,74 @@ TEST(GeneralEngine, FiftyDigitInstanceAgrees) {
   }
 }
 
+// Found by fuzzing (corpus general-finding-decay-to-rounding-reversals): an
+// underdamped free vibration (zeta = 0.5) from x0 = 4e6 decays to the
+// rounding of x around F0 / k within 8 of its 10 time units. Its velocity
+// zeros are a damped half period pi / w_d apart; once the motion is below
+// the state's rounding, N = F0 - k x is rounding noise that does not move:
+// the mass stays at rest there (R = Rs = 0), instead of reversing at every
+// noise crossing of v (hundreds of 1 ms phases before).
+TEST(GeneralEngine, FreeVibrationDecayedBelowRoundingComesToRest) {
+  Model m;
+  m.mass = 65;
+  m.amplitude = 0;
+  m.omega = 3;
+  m.friction = 0;
+  m.stiffness = 16022;
+  m.damping = 1024;
+  m.force_offset = 47;
+  m.x0 = 4063232;
+  m.v0 = 4456448;
+  m.t0 = 4206336;
+  const double t_end = 4206346.4719755119;
+  const Solution s = solve(m, t_end);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end);
+  const long double k = m.stiffness, c = m.damping, mass = m.mass;
+  const long double sigma = c / (2 * mass);
+  const long double half = pi / std::sqrt(k / mass - sigma * sigma);
+  // At most one phase per half period, plus the first and the last.
+  EXPECT_LE(s.phases.size(), static_cast<std::size_t>((t_end - m.t0) / half) + 2);
+  // Every slip after the first with a resolvable travel is a half period.
+  for (std::size_t i = 1; i + 1 < s.phases.size(); ++i) {
+    const Phase& p = s.phases[i];
+    if (p.kind == PhaseKind::stick || std::fabs(p.x_end - p.x_begin) < 1e-12) continue;
+    EXPECT_NEAR(p.t_end - p.t_begin, static_cast<double>(half), 1e-8) << "phase " << i;
+  }
+  const Phase& last = s.phases.back();
+  EXPECT_EQ(last.kind, PhaseKind::stick);
+  const long double equilibrium = 47.0L / 16022.0L;
+  EXPECT_LT(ulps(last.x_end, equilibrium), 4);
+  EXPECT_EQ(last.v_end, 0);
+}
+
+// Found by fuzzing (corpus general-finding-band-edge-noise-stall): critical
+// damping, Rs = R = 3, the mass at the stick band's edge (x = F0 + 3 - 1e-8
+// where the ulp of x is 9e-10), nudged over it by B = 1e-8 every period.
+// Its slips have velocities at the level of their rounding; the search
+// crawled through that noise a resolution at a time and hit its cap. Now it
+// runs to the end, with the mass inside the band whenever it rests and at
+// most four phases per forcing period.
+TEST(GeneralEngine, SlipsAtTheLevelOfTheirRoundingEnd) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 1e-8;
+  m.omega = 1;
+  m.friction = 3;
+  m.stiffness = 1;
+  m.damping = 2;
+  m.force_offset = 4198912;
+  m.x0 = 2048;
+  m.v0 = 6946816;
+  const double t_end = 578.0530482605219;
+  const Solution s = solve(m, t_end);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  EXPECT_LE(s.phases.size(), static_cast<std::size_t>(4 * (t_end / (2 * pi) + 1)));
+  for (const Phase& p : s.phases) {
+    if (p.kind != PhaseKind::stick) continue;
+    // |N| <= Rs + B at rest: x within the band widened by the forcing.
+    EXPECT_LE(std::fabs(m.force_offset - p.x_begin), 3 + 1e-8 + 1e-9) << p.t_begin;
+  }
+}
+
 }  // namespace
 }  // namespace frictionref

@@ -151,11 +151,14 @@ class FirstZeroSearch {
           continue;
         }
         // Nothing provable at the resolution: a sign test, where a value
-        // within its rounding error of zero counts as zero (f hovering at
-        // the level of its noise near a tangency would otherwise be crossed
-        // a resolution at a time). The bracket's hi may then have f > 0.
+        // within twice its rounding error of zero counts as zero (f hovering
+        // at the level of its noise would otherwise be crossed a resolution
+        // at a time, for ever when its slope is below its own rounding: a
+        // stall found by fuzzing). Past it, f - e0 > e0 makes the next
+        // exclusion step about e0 / |f'| long. The bracket's hi may then
+        // have f > 0.
         const Jet<Work> jb = probe.jet(b);
-        if (!(jb.f > jb.e0)) {
+        if (!(jb.f > 2 * jb.e0)) {
           // Falling into the noise while convex: a tangency (v grazing 0)
           // or a pair of zeros round a minimum. The minimum decides, not the
           // first point in the noise (up to sqrt(e0 / f'') early, where the

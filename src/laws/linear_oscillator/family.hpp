@@ -130,7 +130,12 @@ int LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y, bool& 
     return side;
   }
   if (Work(side) * p.d1 < -p.e_d1) return 0;
-  return an > rs ? side : 0;
+  // N within rounding of the band's edge and not moving beyond rounding
+  // either: nothing resolvable drives the mass, it stays (|N| <= Rs within
+  // rounding). Sliding here would follow the sign of rounding noise: a
+  // free oscillation decayed to the state's rounding, with R = Rs = 0,
+  // reversed every millisecond (found by fuzzing).
+  return 0;
 }
 
 template <class Real>
@@ -244,14 +249,17 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   Work from = start.tau;
   Jet<Work> at_from = law.jet(law.point(start.tau));
   // Zeros are not looked for within `blind` of `from` after a start (or a
-  // touch) at v = 0: the stretch where v stays within its rounding error of
-  // zero, from the jet there (f' u + f'' u^2 / 2 = e0), and at least the
-  // time resolution. After a breakaway with Rs = R (f' = 0) it is about
-  // sqrt(2 e0 / f''): no stop can be told apart from rounding sooner.
+  // touch) at v = 0: the stretch where v stays within a few rounding errors
+  // of zero, from the jet there (f' u + f'' u^2 / 2 = 4 e0), and at least
+  // the time resolution. After a breakaway with Rs = R (f' = 0) it is about
+  // sqrt(8 e0 / f''): no stop can be told apart from rounding sooner. (Up to
+  // e0 only, v ended the stretch in its noise, where the search's sign test
+  // counts it as zero: a spurious stop.)
   const auto blind_after_rest = [](const Jet<Work>& j, const Work& res) {
     const Work slope = j.d1 > 0 ? j.d1 : Work(0);
     const Work curvature = fabs(j.d2) > 0 ? Work(fabs(j.d2)) : Work(1);
-    const Work stretch = 2 * j.e0 / (slope + sqrt(slope * slope + 2 * curvature * j.e0));
+    const Work level = 4 * j.e0;
+    const Work stretch = 2 * level / (slope + sqrt(slope * slope + 2 * curvature * level));
     return stretch > res ? stretch : res;
   };
   Work blind = start.v == 0 ? blind_after_rest(at_from, Traits::time_resolution(from)) : Work(0);
