@@ -380,5 +380,64 @@ TEST(GeneralEngine, SlipsAtTheLevelOfTheirRoundingEnd) {
   }
 }
 
+// Found by fuzzing (corpus general-finding-far-equilibrium-edge-touches):
+// a critically damped approach (k = 1, c = 2) to an equilibrium 6e13 from
+// 0, whose rounding (1e-2 in N) dwarfs the harmonic (1e-9). At the velocity
+// zero the net force was inside the band by less than its rounding but by
+// far more than it moves within the time resolution; the at-rest rule
+// followed the slope of N and slid, and the slip turned back at once, a
+// touch at a time until the cap. The mass rests inside the band.
+TEST(GeneralEngine, ApproachToAFarEquilibriumRestsInsideTheBand) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 1e-9;
+  m.omega = 2;
+  m.friction = 3;
+  m.stiffness = 1;
+  m.damping = 2;
+  m.force_offset = -60928000000000;
+  m.x0 = 2048;
+  m.v0 = 694681600;
+  const Solution s = solve(m, 289.02652413026095);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  ASSERT_LE(s.phases.size(), 4u);
+  const Phase& last = s.phases.back();
+  EXPECT_EQ(last.kind, PhaseKind::stick);
+  // |N| = |F0 - k x| <= Rs, to the rounding of k x (a few ulps of 6e13).
+  EXPECT_LE(std::fabs(m.force_offset - last.x_end), 3 + 0.05);
+}
+
+// Found by fuzzing (corpus general-finding-edge-nudge-zero-noise-start):
+// R = Rs = 3 with the mass at the band's edge (x = F0 - 3 exactly), nudged
+// over it by B = 1e-9 half of every period. A slip's closed form is exact
+// at its start (rounding 0), so the stretch in which v is not looked at was
+// one resolution long, and v, far below its noise there, was taken for a
+// stop at once: a slip and a stick per resolution, for ever. Now the
+// stretch comes from the noise one resolution later, and the slips are the
+// physical ones: at most a few per forcing period, the mass in the band
+// whenever it rests.
+TEST(GeneralEngine, NudgesOverTheBandsEdgeAreWholeSlips) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 1e-9;
+  m.omega = 2;
+  m.friction = 3;
+  m.stiffness = 1;
+  m.damping = 2;
+  m.force_offset = 4198912;
+  m.x0 = 2048;
+  m.v0 = -0.02048;
+  m.t0 = -0.1;
+  const double t_end = 467.99730538487916;
+  const Solution s = solve(m, t_end);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  const double periods = (t_end - m.t0) * m.omega / (2 * pi);
+  EXPECT_LE(s.phases.size(), static_cast<std::size_t>(4 * (periods + 1)));
+  for (const Phase& p : s.phases) {
+    if (p.kind != PhaseKind::stick) continue;
+    EXPECT_LE(std::fabs(m.force_offset - p.x_begin), 3 + 1e-9 + 1e-9) << p.t_begin;
+  }
+}
+
 }  // namespace
 }  // namespace frictionref

@@ -56,17 +56,23 @@ class LinearOscillatorFamily {
   }
 
   int direction_at_rest(const Work& tau, const Work& x) {
-    bool merged = false;
-    const int direction = at_rest(tau, o_.omega() * x, merged);
-    summary_->merged_sticks += merged;
-    return direction;
+    const AtRest decision = at_rest(tau, o_.omega() * x);
+    summary_->merged_sticks += decision.merged;
+    return decision.direction;
   }
 
   Breakaway<Work> stick_end(const Work& tau, const Work& x);
   SlipEnd<Work> slip_end(const PhaseStart<Work>& start);
 
  private:
-  int at_rest(const Work& tau, const Work& y, bool& merged) const;
+  // What the at-rest rule says at v = 0: the direction of the slip that
+  // follows (0: the mass stays), and whether a stick shorter than the
+  // resolution was merged into it.
+  struct AtRest {
+    int direction = 0;
+    bool merged = false;
+  };
+  AtRest at_rest(const Work& tau, const Work& y) const;
   // The zero of a decreasing f in a bracket of the event search: certified
   // Halley steps where the scalar type polishes that way, else (or if they
   // do not settle) the scalar type's bracketing solver. `third` bounds
@@ -106,9 +112,8 @@ class LinearOscillatorFamily {
 };
 
 template <class Real>
-int LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y, bool& merged) const {
+auto LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y) const -> AtRest {
   using std::fabs;
-  merged = false;
   const NetForce<Work> net(o_, y);
   const auto p = net.point(tau);
   const Work rs = o_.rs();
@@ -116,26 +121,31 @@ int LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y, bool& 
   // |n| moves by at most |n'| res + |n''| res^2 / 2 within the time
   // resolution; beyond that (and its rounding) the band decides at once.
   const Work res = Traits::time_resolution(tau);
-  const Work tolerance = fabs(p.d1) * res + fabs(p.d2) * res * res / 2 + p.e_n;
+  const Work move = fabs(p.d1) * res + fabs(p.d2) * res * res / 2;
+  const Work tolerance = move + p.e_n;
   const int sign_n = p.n > 0 ? 1 : p.n < 0 ? -1 : 0;
-  if (an - rs > tolerance) return sign_n;
-  if (rs - an > tolerance) return 0;
+  if (an - rs > tolerance) return {sign_n, false};
+  if (rs - an > tolerance) return {0, false};
+  // Inside the band by more than N moves within the resolution, though by
+  // less than its rounding: the stick cannot end within the resolution; the
+  // mass stays, and the stick search (with its rounding margin) decides
+  // when it leaves. (Where N's rounding dwarfs its motion, an equilibrium
+  // 6e13 from 0 nudged by a harmonic of 1e-9, sliding here followed the
+  // slope of N into slips that turned back at once, a touch at a time, for
+  // ever: found by fuzzing.)
+  if (rs - an > move) return {0, false};
   // Within the resolution of a crossing of |n| = rs: the way n moves decides
   // (outward: the stick would end within the resolution, so the slip starts
   // now; inward: the mass stays).
   const int side = rs > tolerance || fabs(p.d1) <= p.e_d1 ? sign_n : p.d1 > 0 ? 1 : -1;
-  if (side == 0) return 0;
-  if (Work(side) * p.d1 > p.e_d1) {
-    merged = an <= rs;
-    return side;
-  }
-  if (Work(side) * p.d1 < -p.e_d1) return 0;
-  // N within rounding of the band's edge and not moving beyond rounding
-  // either: nothing resolvable drives the mass, it stays (|N| <= Rs within
-  // rounding). Sliding here would follow the sign of rounding noise: a
-  // free oscillation decayed to the state's rounding, with R = Rs = 0,
-  // reversed every millisecond (found by fuzzing).
-  return 0;
+  if (side == 0) return {0, false};
+  if (Work(side) * p.d1 > p.e_d1) return {side, an <= rs};
+  // Inward, or N within rounding of the band's edge and not moving beyond
+  // rounding either: nothing resolvable drives the mass, it stays
+  // (|N| <= Rs within rounding). Sliding in the latter case followed the
+  // sign of rounding noise: a free oscillation decayed to the state's
+  // rounding, with R = Rs = 0, reversed every millisecond (found by fuzzing).
+  return {0, false};
 }
 
 template <class Real>
@@ -262,7 +272,18 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     const Work stretch = 2 * level / (slope + sqrt(slope * slope + 2 * curvature * level));
     return stretch > res ? stretch : res;
   };
-  Work blind = start.v == 0 ? blind_after_rest(at_from, Traits::time_resolution(from)) : Work(0);
+  // At the start itself the closed form is exact (e0 = 0): the noise level
+  // of the stretch is that one resolution later. (With e0 = 0 the stretch
+  // was one resolution long and v, far below its noise there, was taken for
+  // a stop at once: a slip at a time, for ever, found by fuzzing.)
+  Work blind = 0;
+  if (start.v == 0) {
+    const Work res = Traits::time_resolution(from);
+    Jet<Work> noisy = at_from;
+    const Work e0_later = law.jet(law.point(from + res)).e0;
+    if (e0_later > noisy.e0) noisy.e0 = e0_later;
+    blind = blind_after_rest(noisy, res);
+  }
   SlipEnd<Work> result;
   // Touches that follow each other within 64 resolutions (no progress) are
   // counted; a slip may touch v = 0 any number of times far apart (R = 0
@@ -291,12 +312,11 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     // rule has just said "slide").
     const Work root = bracket.at_lo.f > 0 ? root_in(bracket, cached_jet, third, f, df) : bracket.hi;
     const auto q = at(root);
-    bool merged = false;
-    const int next = at_rest(root, q.y, merged);
-    if (next == start.sign) {
+    const AtRest decision = at_rest(root, q.y);
+    if (decision.direction == start.sign) {
       // v touches 0 where the force drives on the same way: not a stop. The
-      // search goes on past the stretch where v is within its rounding error
-      // of 0 (from the jet: f' u + f'' u^2 / 2 = e0, f'' > 0 at a touch).
+      // search goes on past the stretch where v is within a few rounding
+      // errors of 0 (blind_after_rest; f'' > 0 at a touch).
       ++summary_->touches;
       at_from = law.jet(law.point(root));  // with its rounding bounds
       blind = blind_after_rest(at_from, res);
@@ -304,13 +324,13 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       from = root > from ? root : Work(from + res);
       continue;
     }
-    summary_->merged_sticks += merged;
+    summary_->merged_sticks += decision.merged;
     result.stops = true;
     result.tau = root;
     result.x = q.y / omega;
     result.v = 0;
     result.acceleration = law.acceleration(q);
-    result.next_direction = next;
+    result.next_direction = decision.direction;
     return result;
   }
 }
