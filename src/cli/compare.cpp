@@ -21,6 +21,7 @@
 #include "frictionref/time_history.hpp"
 #include "frictionref/version.hpp"
 #include "model_options.hpp"
+#include "model_title.hpp"
 
 namespace frictionref::cli {
 namespace {
@@ -178,8 +179,11 @@ Figure comparison_figure(const ComparisonReport& report, const TimeHistory& hist
     for (std::size_t i = 0; i < failed.size(); ++i) verdict += (i ? ", " : "") + failed[i];
     verdict += ")";
   }
-  figure.title = fmt::format("frictionref compare: {} vs exact, lambda = {}: {}", candidate_name,
-                             number(model.lambda()), verdict);
+  const std::string which = model.is_harmonic_coulomb()
+                                ? fmt::format("lambda = {}", number(model.lambda()))
+                                : model_title(model);
+  figure.title = fmt::format("frictionref compare: {} vs exact, {}: {}", candidate_name, which,
+                             verdict);
   figure.panels = {std::move(velocity), std::move(difference)};
   return figure;
 }

@@ -20,6 +20,7 @@
 #include "frictionref/comparison.hpp"
 #include "frictionref/stiff_spring.hpp"
 #include "model_options.hpp"
+#include "model_title.hpp"
 
 namespace frictionref::cli {
 namespace {
@@ -137,9 +138,7 @@ Figure convergence_figure(const Model& model, const std::vector<Run>& runs,
     if (!s.x.empty()) stops.series.push_back(s);
   }
   Figure figure;
-  figure.title = fmt::format("stiff-spring model vs exact solution: m={} B={} w={} R={} (lambda={})",
-                             model.mass, model.amplitude, model.omega, model.friction,
-                             model.lambda());
+  figure.title = "stiff-spring model vs exact solution: " + model_title(model);
   if (!velocity.series.empty()) figure.panels.push_back(velocity);
   if (!stops.series.empty()) figure.panels.push_back(stops);
   return figure;

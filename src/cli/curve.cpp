@@ -9,6 +9,7 @@
 #include "command.hpp"
 #include "csv_format.hpp"
 #include "model_options.hpp"
+#include "model_title.hpp"
 
 namespace frictionref::cli {
 namespace {
@@ -79,12 +80,6 @@ Summary write_curve_csv(std::FILE* out, const Model& model, UniformSampler& samp
 void FigureSamples::add(const State& state) {
   const bool kink = !states_.empty() && states_.back().phase != state.phase;
   if (seen_++ % stride_ == 0 || kink) states_.push_back(state);
-}
-
-std::string model_title(const Model& model) {
-  return fmt::format("m={} B={} w={} R={} (lambda={}) x0={} v0={} t0={}", model.mass,
-                     model.amplitude, model.omega, model.friction, model.lambda(), model.x0,
-                     model.v0, model.t0);
 }
 
 Figure exact_curve_figure(const Model& model, const std::vector<State>& states) {

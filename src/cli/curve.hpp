@@ -40,7 +40,4 @@ class FigureSamples {
 // Exact velocity and position against time, two panels, units in the labels.
 Figure exact_curve_figure(const Model& model, const std::vector<State>& states);
 
-// "m=1 B=1 w=1 R=0.7 (lambda=0.7) x0=0 v0=0 t0=0", for figure titles.
-std::string model_title(const Model& model);
-
 }  // namespace frictionref::cli

@@ -31,13 +31,44 @@ bool ends_with(const std::string& text, const std::string& suffix) {
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-
 // A gnuplot string literal: double quotes, with \ and " escaped.
 std::string quoted(const std::string& text) {
   std::string out = "\"";
   for (char c : text) {
     if (c == '"' || c == '\\') out += '\\';
     out += c;
+  }
+  return out + "\"";
+}
+
+// `text` broken at spaces into lines of at most `width` characters (a word
+// longer than that gets a line of its own): a general model's title is too
+// long for one line of the figure.
+std::vector<std::string> wrapped(const std::string& text, std::size_t width) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      lines.push_back(line);
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  if (!line.empty() || lines.empty()) lines.push_back(line);
+  return lines;
+}
+
+// Lines as one gnuplot string literal, joined by its newline escape.
+std::string quoted_lines(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const std::string& line : lines) {
+    const std::string q = quoted(line);
+    out += out.empty() ? q.substr(0, q.size() - 1) : "\\n" + q.substr(1, q.size() - 2);
   }
   return out + "\"";
 }
@@ -91,8 +122,11 @@ void write_data(const Figure& figure, const std::string& path) {
 
 std::string script(const Figure& figure, const std::string& data, const std::string& output,
                    bool svg) {
+  // About 7 pixels per character of the title's font, with a margin.
+  const std::vector<std::string> title_lines =
+      wrapped(figure.title, static_cast<std::size_t>(figure.width / 8));
   const int height = figure.panel_height * static_cast<int>(figure.panels.size()) +
-                     (figure.title.empty() ? 0 : 40);
+                     (figure.title.empty() ? 0 : 40 + 16 * static_cast<int>(title_lines.size() - 1));
   std::string s;
   s += svg ? fmt::format("set terminal svg size {},{} dynamic noenhanced font 'Sans,12' "
                          "background rgb 'white'\n",
@@ -103,7 +137,7 @@ std::string script(const Figure& figure, const std::string& data, const std::str
   s += "set grid lc rgb '#dddddd'\nset datafile missing 'nan'\n";
   s += "set autoscale\n";
   s += fmt::format("set multiplot layout {},1 title {}\n", figure.panels.size(),
-                   quoted(figure.title));
+                   quoted_lines(title_lines));
   int block = 0;
   for (const Panel& panel : figure.panels) {
     s += "set title " + quoted(panel.title) + "\n";

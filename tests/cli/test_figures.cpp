@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "run_binary.hpp"
 #include "test_support.hpp"
@@ -57,6 +58,36 @@ TEST(Figures, CurvePlotWritesSvgAndPng) {
   }
   for (const std::string& entry : dir.entries())
     EXPECT_EQ(entry.find(".tmp."), std::string::npos) << entry;
+}
+
+// A general model's figure names every term of the model in its title,
+// wrapped onto a second line rather than cut at the figure's edge.
+TEST(Figures, GeneralModelTitleNamesEveryTerm) {
+  TempDir dir;
+  const RunResult result = run_frictionref(
+      {"curve", "--lambda", "0.8", "--static-lambda", "1", "--stiffness", "0.5", "--damping",
+       "0.05", "--force-offset", "0.2", "--harmonic", "0.5,3", "--harmonic", "0.3,0.5,1",
+       "--t-end", "20", "--dt", "0.01", "-o", "curve.csv", "--plot", "v.svg"},
+      dir.path());
+  ASSERT_TRUE(succeeded(result)) << result.err;
+  const std::string figure = read_file(dir.path() / "v.svg");
+  ASSERT_TRUE(is_svg(figure));
+  // The text elements of the figure, in order, joined by spaces: the title's
+  // lines are consecutive elements.
+  std::vector<std::string> texts;
+  for (std::size_t at = figure.find("<text>"); at != std::string::npos;
+       at = figure.find("<text>", at + 1)) {
+    const std::size_t end = figure.find("</text>", at);
+    ASSERT_NE(end, std::string::npos);
+    texts.push_back(figure.substr(at + 6, end - at - 6));
+  }
+  ASSERT_GE(texts.size(), 2u);
+  ASSERT_EQ(texts[0].rfind("frictionref exact solution:", 0), 0u) << texts[0];
+  EXPECT_LT(texts[0].size(), 120u) << "the first line is cut at the figure's edge";
+  const std::string title = texts[0] + " " + texts[1];
+  for (const char* term : {"R=0.8", "Rs=1", "k=0.5", "c=0.05", "F0=0.2", "+0.5 sin(3 t)",
+                           "+0.3 sin(0.5 t + 1)", "x0=0 v0=0 t0=0"})
+    EXPECT_NE(title.find(term), std::string::npos) << term << " in " << title;
 }
 
 TEST(Figures, WrongExtensionIsBadInput) {
