@@ -72,7 +72,16 @@ class LinearOscillatorFamily {
     int direction = 0;
     bool merged = false;
   };
-  AtRest at_rest(const Work& tau, const Work& y) const;
+  // N at a stop from the slip's own closed form, n = v' + 2 sigma v + s r,
+  // with |N| - Rs = s (v' + 2 sigma v) + (r - rs) while s n >= 0 (no
+  // cancellation against r when Rs = R), and the rounding bound of both:
+  // relative to the slip's start, so free of the cancellation in
+  // g - rho^2 y that a far equilibrium (|F0| = 4e12 with N = 1e-8) brings to
+  // N computed from the position.
+  struct ForceAtStop {
+    Work n = 0, excess = 0, e_n = 0;
+  };
+  AtRest at_rest(const Work& tau, const Work& y, const ForceAtStop* at_stop = nullptr) const;
   // The zero of a decreasing f in a bracket of the event search: certified
   // Halley steps where the scalar type polishes that way, else (or if they
   // do not settle) the scalar type's bracketing solver. `third` bounds
@@ -112,34 +121,34 @@ class LinearOscillatorFamily {
 };
 
 template <class Real>
-auto LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y) const -> AtRest {
+auto LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y,
+                                           const ForceAtStop* at_stop) const -> AtRest {
   using std::fabs;
   const NetForce<Work> net(o_, y);
-  const auto p = net.point(tau);
+  auto p = net.point(tau);
   const Work rs = o_.rs();
-  const Work an = fabs(p.n);
+  Work excess = fabs(p.n) - rs;  // |N| - Rs
+  // N's value from the stopping slip where that is the sharper of the two
+  // (its slope at rest, g', does not depend on y: NetForce's is exact).
+  if (at_stop && at_stop->e_n < p.e_n) {
+    p.n = at_stop->n;
+    p.e_n = at_stop->e_n;
+    excess = at_stop->excess;
+  }
   // |n| moves by at most |n'| res + |n''| res^2 / 2 within the time
   // resolution; beyond that (and its rounding) the band decides at once.
   const Work res = Traits::time_resolution(tau);
   const Work move = fabs(p.d1) * res + fabs(p.d2) * res * res / 2;
   const Work tolerance = move + p.e_n;
   const int sign_n = p.n > 0 ? 1 : p.n < 0 ? -1 : 0;
-  if (an - rs > tolerance) return {sign_n, false};
-  if (rs - an > tolerance) return {0, false};
-  // Inside the band by more than N moves within the resolution, though by
-  // less than its rounding: the stick cannot end within the resolution; the
-  // mass stays, and the stick search (with its rounding margin) decides
-  // when it leaves. (Where N's rounding dwarfs its motion, an equilibrium
-  // 6e13 from 0 nudged by a harmonic of 1e-9, sliding here followed the
-  // slope of N into slips that turned back at once, a touch at a time, for
-  // ever: found by fuzzing.)
-  if (rs - an > move) return {0, false};
+  if (excess > tolerance) return {sign_n, false};
+  if (-excess > tolerance) return {0, false};
   // Within the resolution of a crossing of |n| = rs: the way n moves decides
   // (outward: the stick would end within the resolution, so the slip starts
   // now; inward: the mass stays).
   const int side = rs > tolerance || fabs(p.d1) <= p.e_d1 ? sign_n : p.d1 > 0 ? 1 : -1;
   if (side == 0) return {0, false};
-  if (Work(side) * p.d1 > p.e_d1) return {side, an <= rs};
+  if (Work(side) * p.d1 > p.e_d1) return {side, excess <= 0};
   // Inward, or N within rounding of the band's edge and not moving beyond
   // rounding either: nothing resolvable drives the mass, it stays
   // (|N| <= Rs within rounding). Sliding in the latter case followed the
@@ -265,11 +274,21 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // sqrt(8 e0 / f''): no stop can be told apart from rounding sooner. (Up to
   // e0 only, v ended the stretch in its noise, where the search's sign test
   // counts it as zero: a spurious stop.)
+  // With f' < 0 < f'' (v dips below 0 before rising: f' is then within its
+  // rounding, or the at-rest rule would have stopped the mass) the stretch
+  // runs over the dip, to the later root: the dip is as unresolvable as the
+  // slope that makes it. (Stepped one stretch at a time, a dip of 46
+  // resolutions hit the cap on touches: found by fuzzing.)
   const auto blind_after_rest = [](const Jet<Work>& j, const Work& res) {
-    const Work slope = j.d1 > 0 ? j.d1 : Work(0);
-    const Work curvature = fabs(j.d2) > 0 ? Work(fabs(j.d2)) : Work(1);
     const Work level = 4 * j.e0;
-    const Work stretch = 2 * level / (slope + sqrt(slope * slope + 2 * curvature * level));
+    Work stretch;
+    if (j.d1 < 0 && j.d2 > 0) {
+      stretch = (-j.d1 + sqrt(j.d1 * j.d1 + 2 * j.d2 * level)) / j.d2;
+    } else {
+      const Work slope = j.d1 > 0 ? j.d1 : Work(0);
+      const Work curvature = fabs(j.d2) > 0 ? Work(fabs(j.d2)) : Work(1);
+      stretch = 2 * level / (slope + sqrt(slope * slope + 2 * curvature * level));
+    }
     return stretch > res ? stretch : res;
   };
   // At the start itself the closed form is exact (e0 = 0): the noise level
@@ -312,7 +331,17 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     // rule has just said "slide").
     const Work root = bracket.at_lo.f > 0 ? root_in(bracket, cached_jet, third, f, df) : bracket.hi;
     const auto q = at(root);
-    const AtRest decision = at_rest(root, q.y);
+    const auto bounded = law.point(root);  // with its rounding bounds
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    const Work damping = 2 * o_.sigma() * bounded.v;
+    ForceAtStop at_stop;
+    const Work along = s * (bounded.d1 + damping);  // s n - r
+    at_stop.n = s * (along + o_.r());
+    at_stop.excess = along + o_.r() >= 0 ? Work(along + (o_.r() - o_.rs()))
+                                         : Work(-(along + o_.r()) - o_.rs());
+    at_stop.e_n = bounded.e_d1 + 2 * o_.sigma() * bounded.e_v +
+                  4 * eps * (fabs(bounded.d1) + fabs(damping) + o_.rs());
+    const AtRest decision = at_rest(root, q.y, &at_stop);
     if (decision.direction == start.sign) {
       // v touches 0 where the force drives on the same way: not a stop. The
       // search goes on past the stretch where v is within a few rounding
