@@ -439,5 +439,65 @@ TEST(GeneralEngine, NudgesOverTheBandsEdgeAreWholeSlips) {
   }
 }
 
+// Found by fuzzing (corpus general-finding-far-equilibrium-noisy-direction):
+// no friction (R = Rs = 0), a critically damped approach to the equilibrium
+// F0 / k = 4.2e12 driven by B = 1e-8 at w = 9. Once the transient has died
+// the velocity is the harmonic's steady response (amplitude about 1e-9)
+// and reverses every pi / w; N = F0 - k x computed from the position is
+// rounding noise there (1e-5), and it chose the direction at the velocity
+// zeros until the search hit its cap. The motion runs to the end, at most
+// four phases per forcing period, the mass at the equilibrium to the
+// rounding of x.
+TEST(GeneralEngine, FarEquilibriumReversesWithTheHarmonic) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 1e-8;
+  m.omega = 9;
+  m.friction = 0;
+  m.stiffness = 1;
+  m.damping = 2;
+  m.force_offset = 4198912000000;
+  m.x0 = 4393472;
+  m.v0 = 65535;
+  m.t0 = 2304;
+  const double t_end = 2368.2281164733913;
+  const Solution s = solve(m, t_end);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  const double periods = (t_end - m.t0) * m.omega / (2 * pi);
+  EXPECT_LE(s.phases.size(), static_cast<std::size_t>(4 * (periods + 1)));
+  const Phase& last = s.phases.back();
+  EXPECT_LE(std::fabs(last.x_end - m.force_offset), 4 * std::numeric_limits<double>::epsilon() *
+                                                        m.force_offset);
+}
+
+// Found by fuzzing (corpus general-finding-unresolvable-dip-touches): the
+// mass at the band's edge (R = Rs = 3, F0 = 3: x = 0), nudged over it by
+// B = 1e-9. At a touch the slope of v was -9e-21, inside its rounding, with
+// v'' > 0: a dip of 46 time resolutions, crossed one resolution per touch
+// until the cap of 64 touches. The stretch not searched now runs over the
+// dip.
+TEST(GeneralEngine, UnresolvableDipIsSteppedOver) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 1e-9;
+  m.omega = 2;
+  m.friction = 3;
+  m.stiffness = 1;
+  m.damping = 2;
+  m.force_offset = 3;
+  m.x0 = 2048;
+  m.v0 = -19465.3;
+  m.t0 = 358.3;
+  const double t_end = 826.39730538487925;
+  const Solution s = solve(m, t_end);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  const double periods = (t_end - m.t0) * m.omega / (2 * pi);
+  EXPECT_LE(s.phases.size(), static_cast<std::size_t>(4 * (periods + 1)));
+  for (const Phase& p : s.phases) {
+    if (p.kind != PhaseKind::stick) continue;
+    EXPECT_LE(std::fabs(m.force_offset - p.x_begin), 3 + 1e-9 + 1e-15) << p.t_begin;
+  }
+}
+
 }  // namespace
 }  // namespace frictionref
