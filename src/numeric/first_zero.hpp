@@ -74,8 +74,15 @@ class FirstZeroSearch {
     Jet<Work> j = at_a;
     int steps = 0;
     if (blind > 0) {  // no zero is looked for before a + blind: start there
-      const Work b = a + blind < end ? Work(a + blind) : end;
-      const Jet<Work> jb = probe.jet(b);
+      Work b = a + blind < end ? Work(a + blind) : end;
+      Jet<Work> jb = probe.jet(b);
+      // Below zero by more than its rounding at the stretch's end: the zero
+      // is resolvable inside the stretch (the noise that set its length has
+      // decayed); a shorter stretch, down to the resolution.
+      while (jb.f < -2 * jb.e0 && b - a > 2 * resolution) {
+        b = a + (b - a) / 2;
+        jb = probe.jet(b);
+      }
       if (!(jb.f > 0)) return {true, a, b, j, jb};
       cur = b;
       j = jb;

@@ -8,6 +8,7 @@
 // and, within the time resolution of |N| = Rs, from the direction N moves.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -79,7 +80,8 @@ class LinearOscillatorFamily {
   // g - rho^2 y that a far equilibrium (|F0| = 4e12 with N = 1e-8) brings to
   // N computed from the position.
   struct ForceAtStop {
-    Work n = 0, excess = 0, e_n = 0;
+    Work n = 0, e_n = 0;
+    Work excess = 0, e_excess = 0;  // |N| - Rs
   };
   AtRest at_rest(const Work& tau, const Work& y, const ForceAtStop* at_stop = nullptr) const;
   // The zero of a decreasing f in a bracket of the event search: certified
@@ -128,18 +130,20 @@ auto LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y,
   auto p = net.point(tau);
   const Work rs = o_.rs();
   Work excess = fabs(p.n) - rs;  // |N| - Rs
+  Work e_excess = p.e_n;
   // N's value from the stopping slip where that is the sharper of the two
   // (its slope at rest, g', does not depend on y: NetForce's is exact).
-  if (at_stop && at_stop->e_n < p.e_n) {
+  if (at_stop && at_stop->e_excess < e_excess) {
     p.n = at_stop->n;
     p.e_n = at_stop->e_n;
     excess = at_stop->excess;
+    e_excess = at_stop->e_excess;
   }
   // |n| moves by at most |n'| res + |n''| res^2 / 2 within the time
   // resolution; beyond that (and its rounding) the band decides at once.
   const Work res = Traits::time_resolution(tau);
   const Work move = fabs(p.d1) * res + fabs(p.d2) * res * res / 2;
-  const Work tolerance = move + p.e_n;
+  const Work tolerance = move + e_excess;
   const int sign_n = p.n > 0 ? 1 : p.n < 0 ? -1 : 0;
   if (excess > tolerance) return {sign_n, false};
   if (-excess > tolerance) return {0, false};
@@ -274,20 +278,38 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // sqrt(8 e0 / f''): no stop can be told apart from rounding sooner. (Up to
   // e0 only, v ended the stretch in its noise, where the search's sign test
   // counts it as zero: a spurious stop.)
-  // With f' < 0 < f'' (v dips below 0 before rising: f' is then within its
-  // rounding, or the at-rest rule would have stopped the mass) the stretch
-  // runs over the dip, to the later root: the dip is as unresolvable as the
-  // slope that makes it. (Stepped one stretch at a time, a dip of 46
-  // resolutions hit the cap on touches: found by fuzzing.)
-  const auto blind_after_rest = [](const Jet<Work>& j, const Work& res) {
+  // With f' < 0 < f'' and f' within the rounding of the decision that let
+  // the mass slide (v dips below 0 before rising) the stretch runs over the
+  // dip, to the later root: the dip is as unresolvable as the slope that
+  // makes it. That rounding is the larger of f''s own and that of N from
+  // the position, which decides breakaways: a breakaway taken a rounding
+  // early starts with f' slightly below 0. (Stepped one stretch at a time, a
+  // dip of 46 resolutions hit the cap on touches; a stop in each dip gave a
+  // cascade of stops and breakaways: both found by fuzzing.)
+  const auto blind_after_rest = [this](const Jet<Work>& j, const Work& tau, const Work& y,
+                                       const Work& res) {
     const Work level = 4 * j.e0;
+    const Work slope_noise = std::max(j.e1, NetForce<Work>(o_, y).point(tau).e_n);
     Work stretch;
-    if (j.d1 < 0 && j.d2 > 0) {
+    if (j.d1 < 0 && -j.d1 <= slope_noise && j.d2 > 0) {
       stretch = (-j.d1 + sqrt(j.d1 * j.d1 + 2 * j.d2 * level)) / j.d2;
     } else {
       const Work slope = j.d1 > 0 ? j.d1 : Work(0);
       const Work curvature = fabs(j.d2) > 0 ? Work(fabs(j.d2)) : Work(1);
       stretch = 2 * level / (slope + sqrt(slope * slope + 2 * curvature * level));
+    }
+    return stretch > res ? stretch : res;
+  };
+  // The stretch is set by the noise at its start; where that noise decays
+  // within it (the rounding of a far start state fading with the transient)
+  // the stretch is cut to where the noise is still a sixteenth of it, so that
+  // no oscillation of v resolvable later in it is skipped (a stretch of 68
+  // time units passed over ten reversals: found by fuzzing).
+  const auto within_noise = [&law](const Work& from_tau, Work stretch, const Work& e0,
+                                    const Work& res) {
+    for (int i = 0; i < 64 && stretch > res; ++i) {
+      if (law.point(from_tau + stretch).e_v * 16 >= e0) break;
+      stretch /= 2;
     }
     return stretch > res ? stretch : res;
   };
@@ -299,9 +321,10 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   if (start.v == 0) {
     const Work res = Traits::time_resolution(from);
     Jet<Work> noisy = at_from;
-    const Work e0_later = law.jet(law.point(from + res)).e0;
-    if (e0_later > noisy.e0) noisy.e0 = e0_later;
-    blind = blind_after_rest(noisy, res);
+    const Jet<Work> later = law.jet(law.point(from + res));
+    if (later.e0 > noisy.e0) noisy.e0 = later.e0;
+    if (later.e1 > noisy.e1) noisy.e1 = later.e1;
+    blind = within_noise(from, blind_after_rest(noisy, from, omega * start.x, res), noisy.e0, res);
   }
   SlipEnd<Work> result;
   // Touches that follow each other within 64 resolutions (no progress) are
@@ -337,10 +360,16 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     ForceAtStop at_stop;
     const Work along = s * (bounded.d1 + damping);  // s n - r
     at_stop.n = s * (along + o_.r());
-    at_stop.excess = along + o_.r() >= 0 ? Work(along + (o_.r() - o_.rs()))
-                                         : Work(-(along + o_.r()) - o_.rs());
-    at_stop.e_n = bounded.e_d1 + 2 * o_.sigma() * bounded.e_v +
-                  4 * eps * (fabs(bounded.d1) + fabs(damping) + o_.rs());
+    const Work slip_error = bounded.e_d1 + 2 * o_.sigma() * bounded.e_v +
+                            4 * eps * (fabs(bounded.d1) + fabs(damping));
+    at_stop.e_n = slip_error + 4 * eps * o_.r();
+    if (along + o_.r() >= 0) {  // N still along the slip: r - rs is exact (Rs near R)
+      at_stop.excess = along + (o_.r() - o_.rs());
+      at_stop.e_excess = slip_error + 4 * eps * (o_.rs() - o_.r());
+    } else {
+      at_stop.excess = -(along + o_.r()) - o_.rs();
+      at_stop.e_excess = slip_error + 4 * eps * (o_.r() + o_.rs());
+    }
     const AtRest decision = at_rest(root, q.y, &at_stop);
     if (decision.direction == start.sign) {
       // v touches 0 where the force drives on the same way: not a stop. The
@@ -348,7 +377,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       // errors of 0 (blind_after_rest; f'' > 0 at a touch).
       ++summary_->touches;
       at_from = law.jet(law.point(root));  // with its rounding bounds
-      blind = blind_after_rest(at_from, res);
+      blind = within_noise(root, blind_after_rest(at_from, root, q.y, res), at_from.e0, res);
       if (root > from + 64 * res) touches = 0;
       from = root > from ? root : Work(from + res);
       continue;
