@@ -499,5 +499,55 @@ TEST(GeneralEngine, UnresolvableDipIsSteppedOver) {
   }
 }
 
+// Found by fuzzing (corpus general-finding-edge-excess-rounding-of-rs): R =
+// Rs = 7.2e9 and an equilibrium 6e13 from 0. At the first velocity zero
+// after the approach, |N| - Rs was -3e-10, resolvable from the slip's closed
+// form, but its rounding bound included that of Rs itself (1.6e-9): the stop
+// looked ambiguous, the mass slid on, and touch after touch hit the cap.
+TEST(GeneralEngine, ExcessOverStaticFrictionHasItsOwnRounding) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 1e-9;
+  m.omega = 2;
+  m.friction = 7227651000;
+  m.stiffness = 1;
+  m.damping = 2;
+  m.force_offset = -60928000000000;
+  m.x0 = 2048;
+  m.v0 = 694681600;
+  const Solution s = solve(m, 289.02652413026095);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  ASSERT_LE(s.phases.size(), 4u);
+  const Phase& last = s.phases.back();
+  EXPECT_EQ(last.kind, PhaseKind::stick);
+  EXPECT_LE(std::fabs(m.force_offset - last.x_end), m.friction * (1 + 1e-12));
+}
+
+// Found by fuzzing (corpus general-finding-noise-decays-in-stretch): R = Rs
+// = 0, the equilibrium 1.2e15 from 0, where the state's rounding (1e-4 in
+// long double) exceeds the harmonic's whole motion (4e-5). After a restart
+// the slip's rounding decays with the transient; the stretch not searched,
+// set by the noise at its start, ran 68 time units and ended with v
+// resolvably of the wrong sign, and touch after touch hit the cap. The run
+// ends, within the phase bound, at the equilibrium to the rounding of x.
+TEST(GeneralEngine, NoiseThatDecaysInsideTheStretchCutsIt) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 8.193e-05;
+  m.omega = 1;
+  m.friction = 0;
+  m.stiffness = 1;
+  m.damping = 2;
+  m.force_offset = 1219584000000000;
+  m.x0 = 2051000;
+  m.v0 = 7208960;
+  const double t_end = 578.0530482605219;
+  const Solution s = solve(m, t_end);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  EXPECT_LE(s.phases.size(), static_cast<std::size_t>(4 * (t_end / (2 * pi) + 1)));
+  EXPECT_LE(std::fabs(s.phases.back().x_end - m.force_offset),
+            4 * std::numeric_limits<double>::epsilon() * m.force_offset);
+}
+
 }  // namespace
 }  // namespace frictionref
