@@ -129,8 +129,8 @@ auto LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y,
   const NetForce<Work> net(o_, y);
   auto p = net.point(tau);
   const Work rs = o_.rs();
-  Work excess = fabs(p.n) - rs;  // |N| - Rs
-  Work e_excess = p.e_n;
+  Work excess = -p.gap;  // |N| - Rs
+  Work e_excess = p.e_gap;
   // N's value from the stopping slip where that is the sharper of the two
   // (its slope at rest, g', does not depend on y: NetForce's is exact).
   if (at_stop && at_stop->e_excess < e_excess) {
@@ -289,7 +289,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   const auto blind_after_rest = [this](const Jet<Work>& j, const Work& tau, const Work& y,
                                        const Work& res) {
     const Work level = 4 * j.e0;
-    const Work slope_noise = std::max(j.e1, NetForce<Work>(o_, y).point(tau).e_n);
+    const Work slope_noise = std::max(j.e1, NetForce<Work>(o_, y).point(tau).e_gap);
     Work stretch;
     if (j.d1 < 0 && -j.d1 <= slope_noise && j.d2 > 0) {
       stretch = (-j.d1 + sqrt(j.d1 * j.d1 + 2 * j.d2 * level)) / j.d2;

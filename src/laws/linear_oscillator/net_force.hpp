@@ -7,6 +7,14 @@
 // smooth, positive inside the band and zero exactly where |n| = rs, with
 // f' = -2 n n', f'' = -2 (n'^2 + n n''), f''' = -2 (3 n' n'' + n n''') and
 // |n^(k)| <= sum |a| q^k for k >= 1 (forcing.hpp).
+//
+// The gap rs - |n| is also computed from the band's edge on n's side s,
+// (rs - s f0) + s rho^2 y - s h (h the harmonics), where that is sharper: with
+// F0 near +-Rs and k x small, f0 - rho^2 y rounds to the ulps of F0 while the
+// slip's closed form (which subtracts s r from f0 first) resolves far less;
+// the two disagreed inside that rounding, and a stop the slip resolved was
+// followed by a breakaway N from the position could not tell apart, over
+// and over (found by fuzzing).
 #pragma once
 
 #include <cmath>
@@ -24,6 +32,7 @@ class NetForce {
   struct Point {
     Work n = 0, d1 = 0, d2 = 0;  // n, n', n''
     Work e_n = 0, e_d1 = 0, e_d2 = 0;
+    Work gap = 0, e_gap = 0;     // rs - |n|, the sharper of its two forms
   };
 
   NetForce(const Oscillator<Work>& oscillator, const Work& y)
@@ -31,6 +40,12 @@ class NetForce {
     using std::fabs;
     const Forcing<Work>& f = oscillator.forcing();
     mag_offset_ = fabs(oscillator.forcing().constant()) + oscillator.rho2() * fabs(y);
+    spring_ = oscillator.rho2() * y;
+    for (int side = 0; side < 2; ++side) {
+      const Work s = side == 0 ? Work(1) : Work(-1);
+      edge_[side] = oscillator.rs() - s * oscillator.forcing().constant();
+      mag_edge_[side] = fabs(edge_[side]) + fabs(spring_);
+    }
     const Work n0 = fabs(offset_) + f.bound(0);
     n0_ = n0;
   }
@@ -40,6 +55,7 @@ class NetForce {
     const Work eps = std::numeric_limits<Work>::epsilon();
     Point p;
     p.n = offset_;
+    Work h = 0;
     Work mag_n = mag_offset_, mag_d1 = 0, mag_d2 = 0;
     Work phase_n = 0, phase_d1 = 0, phase_d2 = 0;
     for (const auto& term : o_->forcing().terms()) {
@@ -48,6 +64,7 @@ class NetForce {
       const Work abs_a = fabs(term.a);
       const Work q2 = term.q * term.q;
       p.n += term.a * sc.sin;
+      h += term.a * sc.sin;
       p.d1 += term.a * term.q * sc.cos;
       p.d2 -= term.a * q2 * sc.sin;
       mag_n += abs_a;
@@ -63,6 +80,16 @@ class NetForce {
     p.e_n = k * mag_n + eps * phase_n;
     p.e_d1 = k * mag_d1 + eps * phase_d1;
     p.e_d2 = k * mag_d2 + eps * phase_d2;
+    const Work rs = o_->rs();
+    p.gap = rs - fabs(p.n);
+    p.e_gap = p.e_n + 2 * eps * rs;
+    const int side = p.n >= 0 ? 0 : 1;
+    const Work s = side == 0 ? Work(1) : Work(-1);
+    const Work e_edge = k * (mag_edge_[side] + (mag_n - mag_offset_)) + eps * phase_n;
+    if (e_edge < p.e_gap) {
+      p.gap = edge_[side] + s * (spring_ - h);
+      p.e_gap = e_edge;
+    }
     return p;
   }
 
@@ -72,11 +99,11 @@ class NetForce {
     const Work rs = o_->rs();
     const Work eps = std::numeric_limits<Work>::epsilon();
     Jet<Work> j;
-    j.f = (rs - p.n) * (rs + p.n);
+    const Work an = fabs(p.n), a1 = fabs(p.d1), a2 = fabs(p.d2);
+    j.f = p.gap * (rs + an);
     j.d1 = -2 * p.n * p.d1;
     j.d2 = -2 * (p.d1 * p.d1 + p.n * p.d2);
-    const Work an = fabs(p.n), a1 = fabs(p.d1), a2 = fabs(p.d2);
-    j.e0 = (rs + an) * p.e_n * 2 + 4 * eps * fabs(j.f);
+    j.e0 = (rs + an) * p.e_gap * 2 + 4 * eps * fabs(j.f);
     j.e1 = 2 * (a1 * p.e_n + an * p.e_d1) * 2 + 4 * eps * fabs(j.d1);
     j.e2 = 2 * (2 * a1 * p.e_d1 + a2 * p.e_n + an * p.e_d2) * 2 + 8 * eps * (a1 * a1 + an * a2);
     j.tail = an + p.e_n;  // for third_bound: |n| here
@@ -112,13 +139,26 @@ class NetForce {
       mag_n += fabs(term.a);
       phase_n += fabs(term.a) * (term.q * tau_max + 2 * fabs(term.phase));
     }
+    // The offset's part as sharp as the gap's form at a reachable edge
+    // (point() above) allows.
+    const Work rs = o_->rs();
+    const Work reach = o_->forcing().bound(0);
+    Work mag_offset = 0;
+    bool reachable = false;
+    for (int side = 0; side < 2; ++side) {
+      const Work s = side == 0 ? Work(1) : Work(-1);
+      if (s * offset_ + reach + kUlps * eps * (mag_offset_ + reach) < rs) continue;  // never near
+      reachable = true;
+      const Work sharpest = mag_edge_[side] < mag_offset_ ? mag_edge_[side] : mag_offset_;
+      if (sharpest > mag_offset) mag_offset = sharpest;
+    }
+    if (reachable) mag_n += mag_offset - mag_offset_;
     const Work e_n = kUlps * eps * mag_n + eps * phase_n;
     // f = rs^2 - n^2 errs by 2 |n| e_n + e_n^2 and its own rounding. The
     // bound only matters where f is near 0, i.e. |n| within e_n of rs: not
     // the largest |n| (a slow harmonic of huge amplitude, or an offset f0
     // balanced by rho^2 y, would make the margin far larger than the
     // rounding at the crossing and delay the breakaway: found by fuzzing).
-    const Work rs = o_->rs();
     const Work n = rs + e_n;
     return (rs + n) * e_n * 2 + 4 * eps * (rs + n) * (rs + n);
   }
@@ -128,6 +168,9 @@ class NetForce {
   const Oscillator<Work>* o_;
   Work offset_;      // f0 - rho^2 y
   Work mag_offset_;  // |f0| + rho^2 |y|
+  Work spring_ = 0;  // rho^2 y
+  Work edge_[2] = {0, 0};      // rs - s f0 for s = +1, -1
+  Work mag_edge_[2] = {0, 0};  // |rs - s f0| + rho^2 |y|
   Work n0_ = 0;      // >= |n| everywhere
 };
 
