@@ -549,5 +549,37 @@ TEST(GeneralEngine, NoiseThatDecaysInsideTheStretchCutsIt) {
             4 * std::numeric_limits<double>::epsilon() * m.force_offset);
 }
 
+// Found by fuzzing (corpus general-finding-edge-gap-cascade): F0 = R = Rs =
+// 196611 with k = 1, the harmonic B = 3e-8 pushing the mass forward a little
+// each period: N = F0 - x + B sin t exceeds Rs while x < B, so x creeps
+// towards B = 3e-8 and never passes it (then |N| <= Rs for ever). N from the
+// position carries the rounding of F0 (1e-12), the slip's closed form does
+// not: near the end of the creep each breakaway came a rounding early and
+// the slip stopped at once, a cascade of 2-ns phases. Now: one stick and one
+// forward slip per period, x increasing and below B.
+TEST(GeneralEngine, CreepTowardsTheBandsEdgeStaysOnePhasePairPerPeriod) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 3e-8;
+  m.omega = 1;
+  m.friction = 196611;
+  m.stiffness = 1;
+  m.damping = 2;
+  m.force_offset = 196611;
+  m.t0 = 1060000;
+  const double t_end = 1060578.0530482605;
+  const Solution s = solve(m, t_end);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  const double periods = (t_end - m.t0) / (2 * pi);
+  EXPECT_LE(s.phases.size(), static_cast<std::size_t>(2 * periods + 3));
+  double x = 0;
+  for (const Phase& p : s.phases) {
+    EXPECT_NE(p.kind, PhaseKind::slip_backward) << p.t_begin;
+    EXPECT_GE(p.x_end, x) << p.t_begin;
+    EXPECT_LE(p.x_end, 3e-8) << p.t_begin;
+    x = p.x_end;
+  }
+}
+
 }  // namespace
 }  // namespace frictionref
