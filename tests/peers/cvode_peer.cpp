@@ -13,6 +13,17 @@
 // zero, so the error control would let the step grow past a whole force window
 // |sin t| > lambda, which is 1.59 wide at lambda = 0.7, and the root would be missed).
 //
+// The general model (docs/theory.md section 7), with --static-friction RS, --stiffness K,
+// --damping C and --force-offset F0 (m = B = w = 1, lambda = R), follows its own rules with
+// N = F0 + sin t - k x:
+//
+//   slip, direction s:  x' = v, v' = F0 + sin t - c v - k x - s R;  root g = s v, direction -1
+//   stick:              x' = 0, v' = 0;  root g = |N| - Rs, direction +1
+//   at v = 0:           |N| <= Rs -> stick (a stop); else slip in the direction of N
+//
+// and a breakaway slips in the direction of N. Without these options (the seed's cases)
+// the code and the numbers are those above.
+//
 // Methods: adams (CV_ADAMS, fixed-point iteration) and bdf (CV_BDF, Newton with a dense
 // solver and the analytic Jacobian). The whole run is repeated until --min-time seconds
 // have been spent (and at least 3 runs; a run over 1 s is not repeated) and the median is
@@ -20,6 +31,7 @@
 //
 // Usage: cvode_peer --lambda L --v0 V --t-end T --method adams|bdf --rtol R --atol A
 //                   --out FILE [--min-time S] [--deadline S]
+//                   [--static-friction RS] [--stiffness K] [--damping C] [--force-offset F0]
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -44,6 +56,11 @@ using Clock = std::chrono::steady_clock;
 struct Problem {
   double lambda = 0;
   int sign = 0;  // slip direction; 0 = stick
+  // The general model (all off for the seed's: Rs = lambda, k = c = F0 = 0).
+  bool general = false;
+  double rs = 0, k = 0, c = 0, f0 = 0;
+  // N = F(t) - k x, the force that decides at rest (sin t for the seed's model).
+  double net(double t, double x) const { return general ? f0 + std::sin(t) - k * x : std::sin(t); }
 };
 
 int rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
@@ -53,9 +70,12 @@ int rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
   if (p->sign == 0) {
     D[0] = 0;
     D[1] = 0;
-  } else {
+  } else if (!p->general) {
     D[0] = Y[1];
     D[1] = std::sin(t) - p->sign * p->lambda;
+  } else {
+    D[0] = Y[1];
+    D[1] = p->f0 + std::sin(t) - p->c * Y[1] - p->k * Y[0] - p->sign * p->lambda;
   }
   return 0;
 }
@@ -65,15 +85,17 @@ int jacobian(realtype, N_Vector, N_Vector, SUNMatrix J, void* user_data, N_Vecto
   const auto* p = static_cast<const Problem*>(user_data);
   SM_ELEMENT_D(J, 0, 0) = 0;
   SM_ELEMENT_D(J, 0, 1) = p->sign == 0 ? 0 : 1;
-  SM_ELEMENT_D(J, 1, 0) = 0;
-  SM_ELEMENT_D(J, 1, 1) = 0;
+  SM_ELEMENT_D(J, 1, 0) = p->sign == 0 || !p->general ? 0 : -p->k;
+  SM_ELEMENT_D(J, 1, 1) = p->sign == 0 || !p->general ? 0 : -p->c;
   return 0;
 }
 
 int root(realtype t, N_Vector y, realtype* g, void* user_data) {
   const auto* p = static_cast<const Problem*>(user_data);
-  if (p->sign == 0)
+  if (p->sign == 0 && !p->general)
     g[0] = std::fabs(std::sin(t)) - p->lambda;
+  else if (p->sign == 0)
+    g[0] = std::fabs(p->net(t, N_VGetArrayPointer(y)[0])) - p->rs;
   else
     g[0] = p->sign * N_VGetArrayPointer(y)[1];
   return 0;
@@ -93,8 +115,9 @@ struct RunResult {
 
 int sign_of(double value) { return value > 0 ? 1 : value < 0 ? -1 : 0; }
 
-RunResult run(double lambda, double v0, double t_end, bool bdf, double rtol, double atol,
-              double deadline) {
+RunResult run(const Problem& model, double v0, double t_end, bool bdf, double rtol,
+              double atol, double deadline) {
+  const double rs = model.rs;  // the limit at rest: Rs (= lambda for the seed's model)
   const auto start = Clock::now();
   RunResult result;
   SUNContext ctx = nullptr;
@@ -103,14 +126,13 @@ RunResult run(double lambda, double v0, double t_end, bool bdf, double rtol, dou
   N_VGetArrayPointer(y)[0] = 0;
   N_VGetArrayPointer(y)[1] = v0;
 
-  Problem problem;
-  problem.lambda = lambda;
+  Problem problem = model;
   double t = 0;
   // Initial mode: at rest, the stick rule decides.
   if (v0 != 0)
     problem.sign = sign_of(v0);
   else
-    problem.sign = std::fabs(std::sin(t)) <= lambda ? 0 : sign_of(std::sin(t));
+    problem.sign = std::fabs(problem.net(t, 0)) <= rs ? 0 : sign_of(problem.net(t, 0));
 
   void* mem = CVodeCreate(bdf ? CV_BDF : CV_ADAMS, ctx);
   CVodeInit(mem, rhs, t, y);
@@ -174,10 +196,10 @@ RunResult run(double lambda, double v0, double t_end, bool bdf, double rtol, dou
     }
     accumulate();
     realtype* Y = N_VGetArrayPointer(y);
-    const double force = std::sin(t);
+    const double force = problem.net(t, Y[0]);
     const char* kind = nullptr;
     if (problem.sign != 0) {  // v reached 0
-      if (std::fabs(force) <= lambda) {
+      if (std::fabs(force) <= rs) {
         kind = "stop";
         problem.sign = 0;
       } else if (sign_of(force) != problem.sign) {
@@ -186,7 +208,7 @@ RunResult run(double lambda, double v0, double t_end, bool bdf, double rtol, dou
       } else {
         kind = "touch";  // the force keeps it going the same way
       }
-    } else {  // |sin t| reached lambda
+    } else {  // |N| reached Rs (|sin t| reached lambda)
       kind = "breakaway";
       problem.sign = sign_of(force);
     }
@@ -213,7 +235,8 @@ RunResult run(double lambda, double v0, double t_end, bool bdf, double rtol, dou
 [[noreturn]] void usage() {
   std::fprintf(stderr,
                "usage: cvode_peer --lambda L --v0 V --t-end T --method adams|bdf --rtol R "
-               "--atol A --out FILE [--min-time S] [--deadline S]\n");
+               "--atol A --out FILE [--min-time S] [--deadline S] [--static-friction RS] "
+               "[--stiffness K] [--damping C] [--force-offset F0]\n");
   std::exit(2);
 }
 
@@ -221,7 +244,8 @@ RunResult run(double lambda, double v0, double t_end, bool bdf, double rtol, dou
 
 int main(int argc, char** argv) {
   double lambda = NAN, v0 = 0, t_end = NAN, rtol = NAN, atol = NAN, min_time = 0.2,
-         deadline = 1e30;
+         deadline = 1e30, rs = NAN, k = 0, c = 0, f0 = 0;
+  bool general = false;
   std::string method, out;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -236,19 +260,35 @@ int main(int argc, char** argv) {
     else if (arg == "--deadline") deadline = std::strtod(value, nullptr);
     else if (arg == "--method") method = value;
     else if (arg == "--out") out = value;
+    else if (arg == "--static-friction") rs = std::strtod(value, nullptr), general = true;
+    else if (arg == "--stiffness") k = std::strtod(value, nullptr), general = true;
+    else if (arg == "--damping") c = std::strtod(value, nullptr), general = true;
+    else if (arg == "--force-offset") f0 = std::strtod(value, nullptr), general = true;
     else usage();
   }
   if (std::isnan(lambda) || std::isnan(t_end) || std::isnan(rtol) || std::isnan(atol) ||
       out.empty() || (method != "adams" && method != "bdf"))
     usage();
+  if (std::isnan(rs)) rs = lambda;
+  if (!(rs >= lambda) || !(k >= 0) || !(c >= 0) || !std::isfinite(f0)) {
+    std::fprintf(stderr, "cvode_peer: needs Rs >= lambda, k >= 0, c >= 0, finite F0\n");
+    return 2;
+  }
   const bool bdf = method == "bdf";
+  Problem model;
+  model.lambda = lambda;
+  model.general = general;
+  model.rs = rs;
+  model.k = k;
+  model.c = c;
+  model.f0 = f0;
 
   std::vector<double> times;
   double total = 0;
   RunResult result;
   while (true) {
     const auto start = Clock::now();
-    result = run(lambda, v0, t_end, bdf, rtol, atol, deadline);
+    result = run(model, v0, t_end, bdf, rtol, atol, deadline);
     const double dt = std::chrono::duration<double>(Clock::now() - start).count();
     times.push_back(dt);
     total += dt;
@@ -271,6 +311,9 @@ int main(int argc, char** argv) {
                bdf ? "BDF" : "Adams", SUNDIALS_VERSION);
   std::fprintf(f, "  \"lambda\": %.17g, \"v0\": %.17g, \"t_end\": %.17g, \"rtol\": %.3g, \"atol\": %.3g,\n",
                lambda, v0, t_end, rtol, atol);
+  if (general)
+    std::fprintf(f, "  \"static\": %.17g, \"stiffness\": %.17g, \"damping\": %.17g, \"force_offset\": %.17g,\n",
+                 rs, k, c, f0);
   std::fprintf(f, "  \"time_s\": %.9g, \"reps\": %zu, \"finished\": %s, \"t_reached\": %.17g, \"failure\": \"%s\",\n",
                median, n, result.finished ? "true" : "false", result.t_reached,
                result.failure.c_str());

@@ -9,11 +9,18 @@
 //    as above) and, with --stiff-record, its velocity record (t, v as raw float64 pairs)
 //    for the event extraction of peer_common.py.
 //
+// The general model (docs/theory.md section 7) with --static-friction RS, --stiffness K,
+// --damping C and --force-offset F0 (m = B = w = 1, lambda = R): the engine takes its general
+// path (closed-form phases, certified search for the zeros). The stiff-spring simulator
+// models the seed's problem only (B sin(w t), Rs = R, no spring or damper), so it is not
+// run for such a model ("stiff": null).
+//
 // Writes one JSON object to --out: the double engine's events ("events", 17 digits) and the
 // 50-digit engine's ("hp_event_times", 30 digits, as strings), which are the reference the
 // peers' event times are measured against.
 //
 // Usage: ours --lambda L --v0 V --t-end T --out FILE [--min-time S] [--stiff-record FILE]
+//             [--static-friction RS] [--stiffness K] [--damping C] [--force-offset F0]
 #include <frictionref/frictionref.hpp>
 #include <frictionref/multiprecision.hpp>
 
@@ -74,14 +81,15 @@ double median_time(double min_time, int min_reps, int& reps, Body body) {
 [[noreturn]] void usage() {
   std::fprintf(stderr,
                "usage: ours --lambda L --v0 V --t-end T --out FILE [--min-time S] "
-               "[--stiff-record FILE]\n");
+               "[--stiff-record FILE] [--static-friction RS] [--stiffness K] [--damping C] "
+               "[--force-offset F0]\n");
   std::exit(2);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  double lambda = NAN, v0 = 0, t_end = NAN, min_time = 0.2;
+  double lambda = NAN, v0 = 0, t_end = NAN, min_time = 0.2, rs = NAN, k = 0, c = 0, f0 = 0;
   std::string out, stiff_record;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -93,6 +101,10 @@ int main(int argc, char** argv) {
     else if (arg == "--min-time") min_time = std::strtod(value, nullptr);
     else if (arg == "--out") out = value;
     else if (arg == "--stiff-record") stiff_record = value;
+    else if (arg == "--static-friction") rs = std::strtod(value, nullptr);
+    else if (arg == "--stiffness") k = std::strtod(value, nullptr);
+    else if (arg == "--damping") c = std::strtod(value, nullptr);
+    else if (arg == "--force-offset") f0 = std::strtod(value, nullptr);
     else usage();
   }
   if (std::isnan(lambda) || std::isnan(t_end) || out.empty()) usage();
@@ -100,6 +112,17 @@ int main(int argc, char** argv) {
   frictionref::Model model;  // m = B = w = 1, x0 = t0 = 0
   model.friction = lambda;
   model.v0 = v0;
+  if (!std::isnan(rs)) model.static_friction = rs;
+  model.stiffness = k;
+  model.damping = c;
+  model.force_offset = f0;
+  const bool general = !model.is_harmonic_coulomb();
+  try {
+    model.validate();
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "ours: %s\n", error.what());
+    return 2;
+  }
 
   // 1. The double engine: events, then timing (streaming, no storage).
   const frictionref::Solution solution = frictionref::solve(model, t_end);
@@ -138,21 +161,25 @@ int main(int argc, char** argv) {
     hp_max_rel = std::max(hp_max_rel, rel);
   }
 
-  // 3. The stiff-spring simulator at K_f = 1e7: time (streaming), then the record.
+  // 3. The stiff-spring simulator at K_f = 1e7: time (streaming), then the record. It
+  //    models the seed's problem only: skipped for the general model.
   frictionref::StiffSpringOptions stiff_options;
   stiff_options.kf = 1e7;
   int stiff_reps = 0;
   std::uint64_t stiff_steps = 0;
   double stiff_dt = 0;
-  const double stiff_time = median_time(min_time, 3, stiff_reps, [&] {
-    frictionref::StiffSpringSimulator simulator(model, t_end, stiff_options);
-    frictionref::StiffSample sample;
-    while (simulator.next(sample)) checksum += sample.v;
-    stiff_steps = simulator.steps_taken();
-    stiff_dt = simulator.step();
-  });
+  double stiff_time = 0;
+  if (!general) {
+    stiff_time = median_time(min_time, 3, stiff_reps, [&] {
+      frictionref::StiffSpringSimulator simulator(model, t_end, stiff_options);
+      frictionref::StiffSample sample;
+      while (simulator.next(sample)) checksum += sample.v;
+      stiff_steps = simulator.steps_taken();
+      stiff_dt = simulator.step();
+    });
+  }
   std::uint64_t stiff_samples = 0;
-  if (!stiff_record.empty()) {
+  if (!general && !stiff_record.empty()) {
     std::FILE* record = std::fopen(stiff_record.c_str(), "wb");
     if (!record) {
       std::perror(stiff_record.c_str());
@@ -180,6 +207,9 @@ int main(int argc, char** argv) {
   }
   std::fprintf(f, "{\n  \"peer\": \"frictionref\",\n  \"version\": \"%s\",\n", frictionref::version);
   std::fprintf(f, "  \"lambda\": %.17g, \"v0\": %.17g, \"t_end\": %.17g,\n", lambda, v0, t_end);
+  std::fprintf(f, "  \"general\": %s, \"static\": %.17g, \"stiffness\": %.17g, \"damping\": %.17g, "
+               "\"force_offset\": %.17g,\n",
+               general ? "true" : "false", model.static_limit(), k, c, f0);
   std::fprintf(f, "  \"termination\": \"%s\",\n",
                std::string(frictionref::to_string(summary.termination)).c_str());
   std::fprintf(f, "  \"phases\": %llu, \"stops\": %llu, \"reversals\": %llu, \"breakaways\": %llu,\n",
@@ -196,10 +226,13 @@ int main(int argc, char** argv) {
                hp_same_sequence ? "true" : "false", hp_events.size());
   std::fprintf(f, "  \"hp_max_abs_error\": %.6g, \"hp_max_rel_error\": %.6g, \"hp_max_error_at\": %.17g,\n",
                hp_max_abs, hp_max_rel, hp_max_at);
-  std::fprintf(f, "  \"stiff\": {\"kf\": %.17g, \"dt\": %.17g, \"steps\": %llu, \"time_s\": %.9g, "
-               "\"reps\": %d, \"output_dt\": %.17g, \"samples\": %llu},\n",
-               stiff_options.kf, stiff_dt, static_cast<unsigned long long>(stiff_steps), stiff_time,
-               stiff_reps, stiff_options.output_dt, static_cast<unsigned long long>(stiff_samples));
+  if (general)
+    std::fprintf(f, "  \"stiff\": null,\n");
+  else
+    std::fprintf(f, "  \"stiff\": {\"kf\": %.17g, \"dt\": %.17g, \"steps\": %llu, \"time_s\": %.9g, "
+                 "\"reps\": %d, \"output_dt\": %.17g, \"samples\": %llu},\n",
+                 stiff_options.kf, stiff_dt, static_cast<unsigned long long>(stiff_steps), stiff_time,
+                 stiff_reps, stiff_options.output_dt, static_cast<unsigned long long>(stiff_samples));
   std::fprintf(f, "  \"checksum\": %.17g,\n", checksum);
   std::fprintf(f, "  \"events\": [");
   for (std::size_t i = 0; i < events.size(); ++i)

@@ -1,6 +1,8 @@
 """Shared pieces of the peer comparison (tests/peers/README.md).
 
-- CASES: the four cases every peer runs (m = B = w = 1, x0 = 0, t0 = 0).
+- CASES: the seed's four cases every peer runs (m = B = w = 1, x0 = 0, t0 = 0);
+  GENERAL_CASES: the general model's cases (spring, damper, static friction, offset), run
+  by the exact engine, scipy and CVODE; case_params() gives any case's parameters.
 - Event lists: [(kind, t), ...] with kind "stop" (a slip ends in a stick), "breakaway"
   (a stick ends), "reversal" (v = 0 and the slip goes on the other way at once); a peer
   may also report "touch" (v = 0 and the slip goes on the same way), which the exact
@@ -26,6 +28,63 @@ CASES = [
     ("1000p", 0.7, 0.0, 2000.0 * math.pi, "lambda 0.7, 1000 periods (t_end = 2000 pi)"),
 ]
 CASE_BY_ID = {c[0]: c for c in CASES}
+
+# The general model's cases (docs/theory.md section 7), m = B = w = 1, x0 = t0 = 0:
+#   x'' + c x' + k x = F0 + sin t - f,
+#   slipping f = R sign(v); at rest N = F0 + sin t - k x, stuck while |N| <= Rs,
+#   breaks away in the direction of N when |N| > Rs; a slip reaching v = 0 sticks if
+#   |N| <= Rs there, else goes on at once in the direction of N.
+# "lambda" is R (= R/B with B = 1), "static" is Rs. Siconos and the stiff spring (a model
+# of the seed's problem only) do not run these.
+GENERAL_CASES = [
+    {"id": "spring-damper", "lambda": 0.05, "static": 0.05, "stiffness": 9.0, "damping": 0.1,
+     "force_offset": 0.0, "v0": 0.0, "t_end": 60.0 * math.pi,
+     "label": "spring + damper + Coulomb: k 9 (natural frequency 3 w), c 0.1, R 0.05, "
+              "30 periods (t_end = 60 pi)",
+     "title": "spring + damper + Coulomb (k 9, c 0.1, R 0.05)",
+     "why": "The natural frequency sqrt(k/m) = 3 is three times the forcing frequency, so "
+            "the free oscillation rings inside each forcing period: after a start-up of a "
+            "few periods, every half period has a long slip, a reversal, a short slip back "
+            "(0.09 time units, the mass moves by 2e-5), a stop and a stick of about 0.74 "
+            "time units that ends in a breakaway. The slips back are shortest early on "
+            "(0.0125 time units and 6e-8 length units at t = 16.86) and grow to their "
+            "steady length; an integrator must resolve them to keep the sequence."},
+    {"id": "static-kinetic", "lambda": 0.4, "static": 0.8, "stiffness": 0.0, "damping": 0.0,
+     "force_offset": 0.1, "v0": 0.0, "t_end": 60.0 * math.pi,
+     "label": "static > kinetic: R 0.4, Rs 0.8, F0 0.1, 30 periods (t_end = 60 pi)",
+     "title": "static > kinetic friction (R 0.4, Rs 0.8, F0 0.1)",
+     "why": "Each stick ends in a breakaway where |N| = |F0 + sin t| reaches Rs = 0.8 "
+            "(not R). Each period has one forward slip that ends at v = 0 with N = -0.834, "
+            "beyond Rs, so the mass reverses at once, and one backward slip that ends with "
+            "N = 0.594, between R and Rs, so the mass sticks: with Rs = R it would have "
+            "gone on. The offset F0 = 0.1 breaks the symmetry between the two half periods "
+            "(with F0 = 0 every stop would be of one kind); no spring (k = 0), so N does "
+            "not depend on x and the mass drifts forward."},
+]
+GENERAL_CASE_BY_ID = {c["id"]: c for c in GENERAL_CASES}
+ALL_CASE_IDS = [c[0] for c in CASES] + [c["id"] for c in GENERAL_CASES]
+
+
+def case_params(case_id):
+    """Every parameter of a case as a dict (the seed's cases with Rs = R and k = c = F0 = 0):
+    id, lambda (R), static (Rs), stiffness, damping, force_offset, v0, t_end, label, and
+    general (False for the seed's model, where the drivers keep their original code)."""
+    if case_id in GENERAL_CASE_BY_ID:
+        params = dict(GENERAL_CASE_BY_ID[case_id])
+        params["general"] = True
+        return params
+    cid, lam, v0, t_end, label = CASE_BY_ID[case_id]
+    return {"id": cid, "lambda": lam, "static": lam, "stiffness": 0.0, "damping": 0.0,
+            "force_offset": 0.0, "v0": v0, "t_end": t_end, "label": label, "general": False}
+
+
+def general_model_options(params):
+    """The drivers' command-line options for the general model's terms (empty for the
+    seed's cases)."""
+    if not params.get("general"):
+        return []
+    return ["--static-friction", repr(params["static"]), "--stiffness", repr(params["stiffness"]),
+            "--damping", repr(params["damping"]), "--force-offset", repr(params["force_offset"])]
 
 
 def write_json(path, obj):

@@ -23,7 +23,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import peer_common  # noqa: E402
-from peer_common import CASES  # noqa: E402
+from peer_common import CASES, GENERAL_CASES  # noqa: E402
 
 PYTHON = "/usr/bin/python3"
 
@@ -143,6 +143,14 @@ def read_load():
         return "?"
 
 
+def git_branch(repo):
+    try:
+        return subprocess.run(["git", "-C", repo, "rev-parse", "--abbrev-ref", "HEAD"],
+                              capture_output=True, text=True).stdout.strip() or "?"
+    except OSError:
+        return "?"
+
+
 def git_revision(repo):
     try:
         rev = subprocess.run(["git", "-C", repo, "rev-parse", "--short=12", "HEAD"],
@@ -227,11 +235,17 @@ def build_rows(results, case_id):
     exact = peer_common.load_exact_events(results, case_id)
     n_events = max(1, len(exact))
     rows = []
+    general = ours.get("general", False)
     rows.append({
         "code": "**frictionref** exact engine",
-        "setting": "double, closed form, predicted Halley or Brent roots (streaming `next()`)",
+        "setting": ("double, general path: closed-form phases, certified search for the "
+                    "zeros of v and of \\|N\\| - Rs (streaming `next()`)" if general else
+                    "double, closed form, predicted Halley or Brent roots (streaming `next()`)"),
         "time": ours["time_s"],
-        "evals": "%s closed-form v evals" % fmt_int(ours["velocity_evaluations"]),
+        "evals": ("%s closed-form evals (%s in the certified search, %s in root polishing)" % (
+                      fmt_int(ours["velocity_evaluations"]), fmt_int(ours["sign_tests"]),
+                      fmt_int(ours["root_function_calls"])) if general else
+                  "%s closed-form v evals" % fmt_int(ours["velocity_evaluations"])),
         "error": ours["hp_max_abs_error"],
         "error_note": "vs 50 digits",
         "sequence_ok": ours["hp_same_sequence"],
@@ -250,9 +264,9 @@ def build_rows(results, case_id):
         "sequence": "the reference for the line above",
         "finished": True, "reference": True,
     })
-    stiff = ours["stiff"]
+    stiff = ours["stiff"]  # None for the general model (the stiff spring models the seed's)
     stiff_record = os.path.join(results, "stiff-%s.bin" % case_id)
-    if os.path.exists(stiff_record):
+    if stiff and os.path.exists(stiff_record):
         import numpy as np
         data = np.fromfile(stiff_record).reshape(-1, 2)
         stiff_events = peer_common.events_from_record(data[:, 0], data[:, 1], 1e-3,
@@ -333,6 +347,109 @@ def table(rows, ours_time, with_ratio):
 
 
 # ---------------------------------------------------------------------------------------
+# The general model's cases
+
+
+def general_case_section(w, params, ours, exact, rows, seed_ours):
+    """The section of one general-model case: its summary lines, then its full table.
+    seed_ours: our record on the seed's 1000-period case (per-event cost for comparison),
+    or None."""
+    ours_time = ours["time_s"]
+    n = max(1, len(exact))
+    ours_err = ours["hp_max_abs_error"]
+    ulp_end = math.ulp(exact[-1][1]) if exact else 0.0
+    equal_limit = max(ours_err, ulp_end)
+    peers = [r for r in rows if not r.get("ours") and not r.get("reference")]
+    correct = [r for r in peers if r["sequence_ok"]]
+    lhs = "x''" + "".join(" + %g %s" % (params[key], term) for key, term in
+                          (("damping", "x'"), ("stiffness", "x")) if params[key])
+    rhs = ("%g + " % params["force_offset"] if params["force_offset"] else "") + "sin t - f"
+    w("Model: `%s = %s`, R = %g, Rs = %g, from rest at x = 0, "
+      "t_end = %s (%.0f forcing periods); exact events: %s." % (
+          lhs, rhs, params["lambda"], params["static"], "60 pi = %.4f" % params["t_end"]
+          if abs(params["t_end"] - 60 * math.pi) < 1e-9 else "%g" % params["t_end"],
+          params["t_end"] / peer_common.TWO_PI,
+          peer_common.describe_counts(peer_common.count_kinds(exact))))
+    w("")
+    w(params["why"])
+    w("")
+    per_event = ours_time / n
+    text = ("- Ours: **%s** for the whole run (%s per event), max error %s against the "
+            "50-digit engine (1 ulp of t at the last event, t = %.1f, is %s)." % (
+                fmt_time(ours_time), fmt_time(per_event), fmt_err(ours_err),
+                exact[-1][1] if exact else 0, fmt_err(ulp_end)))
+    if seed_ours:
+        seed_per_event = seed_ours["time_s"] / max(1, seed_ours["phases"] - 1)
+        text += (" That is %s times our per-event cost on the seed's 1000-period case (%s "
+                 "per event): the seed's model has closed-form critical times and predicted "
+                 "Halley roots, while the general path isolates every zero of v (and of "
+                 "\\|N\\| - Rs in a stick) with a certified exclusion test from rigorous "
+                 "derivative bounds, %s closed-form evaluations for %d events here (%.0f per "
+                 "event, against %.1f on the seed's case)." % (
+                     fmt_ratio(per_event / seed_per_event), fmt_time(seed_per_event),
+                     fmt_int(ours["velocity_evaluations"]), len(exact),
+                     ours["velocity_evaluations"] / n,
+                     seed_ours["velocity_evaluations"] / max(1, seed_ours["phases"] - 1)))
+    w(text)
+    w("- The 50-digit engine took %s and %s." % (
+        fmt_time(ours["hp_time_s"]),
+        "gave the same sequence" if ours["hp_same_sequence"] else
+        "**gave a different sequence** (the errors are then against the double engine)"))
+    if correct:
+        equal = [r for r in correct if r["error"] is not None and r["error"] <= equal_limit]
+        fastest = min(correct, key=lambda r: r["time"])
+        best = min(correct, key=lambda r: (r["error"], r["time"]))
+        if equal:
+            eq_fast = min(equal, key=lambda r: r["time"])
+            w("- Fastest peer run at equal or better accuracy (right sequence, max error <= "
+              "%s): **%s, %s**: %s, max event error %s. Ratio **%s**." % (
+                  fmt_err(equal_limit), eq_fast["code"], eq_fast["setting"],
+                  fmt_time(eq_fast["time"]), fmt_err(eq_fast["error"]),
+                  fmt_ratio(eq_fast["time"] / ours_time)))
+        else:
+            w("- **No peer run reached equal accuracy** (right sequence and max error <= "
+              "%s). The closest, the most accurate right-sequence run, is **%s, %s**: %s, "
+              "max event error %s (%s times ours). Ratio **%s**." % (
+                  fmt_err(equal_limit), best["code"], best["setting"], fmt_time(best["time"]),
+                  fmt_err(best["error"]),
+                  fmt_ratio(best["error"] / ours_err) if ours_err else "-",
+                  fmt_ratio(best["time"] / ours_time)))
+        w("- Fastest peer run that got the whole sequence right, at any accuracy: **%s, %s**: "
+          "%s, max event error %s. Ratio **%s**." % (
+              fastest["code"], fastest["setting"], fmt_time(fastest["time"]),
+              fmt_err(fastest["error"]), fmt_ratio(fastest["time"] / ours_time)))
+        for family in ("scipy `solve_ivp`", "SUNDIALS CVODE"):
+            fam = [r for r in correct if r["code"] == family]
+            if fam:
+                f_best = min(fam, key=lambda r: (r["error"], r["time"]))
+                f_fast = min(fam, key=lambda r: r["time"])
+                w("- %s: fastest right-sequence run %s (%s, error %s, ratio %s); most accurate "
+                  "%s (%s, error %s, ratio %s)." % (
+                      family, f_fast["setting"], fmt_time(f_fast["time"]),
+                      fmt_err(f_fast["error"]), fmt_ratio(f_fast["time"] / ours_time),
+                      f_best["setting"], fmt_time(f_best["time"]), fmt_err(f_best["error"]),
+                      fmt_ratio(f_best["time"] / ours_time)))
+    else:
+        w("- **No peer got the sequence of stops, breakaways and reversals right on this "
+          "case**, so no ratio can be stated at comparable accuracy.")
+    wrong = [r for r in peers if not r["sequence_ok"]]
+    if wrong:
+        w("- Runs without the right sequence (%d of %d): %s." % (
+            len(wrong), len(peers), "; ".join("%s %s" % (r["code"], r["setting"])
+                                              for r in wrong)))
+    else:
+        w("- All %d peer runs got the whole sequence right." % len(peers))
+    w("- Not run here: Siconos (its relay formulation in `siconos_peer.py` is written for the "
+      "seed's model only) and our stiff-spring simulator (it models the seed's problem: "
+      "`B sin(w t)`, Rs = R, no spring or damper).")
+    w("")
+    w("Full table (the ratio column is peer time / our time):")
+    w("")
+    w(table(rows, ours_time, True))
+    w("")
+
+
+# ---------------------------------------------------------------------------------------
 # The report
 
 
@@ -351,7 +468,11 @@ def write_report(args, results, commands, elapsed_runs):
       "user could have used instead, on the same problem: the mass with Coulomb friction "
       "under `B sin(w t)`, `m = B = w = 1`, `x0 = t0 = 0`. Every peer integrates it as a "
       "stick/slip switched system and reports its stops and breakaways; the exact engine's "
-      "event times are the reference. How the peers are set up and how to rerun this page: "
+      "event times are the reference. Two further cases use the general model "
+      "([docs/theory.md](theory.md) section 7: a spring and a damper, static friction above "
+      "sliding friction, a constant force), run by the exact engine, scipy and CVODE "
+      "([The general model](#the-general-model-spring-damper-static-friction)). How the "
+      "peers are set up and how to rerun this page: "
       "[tests/peers/README.md](../tests/peers/README.md).")
     w("")
     w("## Machine and software")
@@ -364,14 +485,22 @@ def write_report(args, results, commands, elapsed_runs):
         ", virtual machine (%s)" % info["hypervisor"] if info.get("hypervisor") else ""))
     w("| memory | %s |" % info["memory"])
     w("| OS | %s, Linux %s |" % (info["os"], info["kernel"]))
-    w("| frictionref | %s, Release build (`cmake --preset release`) |" % git_revision(repo))
+    if args.source_head:
+        w("| frictionref | %s (branch %s), built from the last commit (`git archive HEAD`, "
+          "without the working tree's uncommitted changes), Release build |" % (
+              args.source_head, git_branch(repo)))
+    else:
+        w("| frictionref | %s, Release build (%s) |" % (git_revision(repo), args.build_desc))
     for p, v in versions.items():
         w("| `%s` | %s |" % (p, v))
     w("")
     w("Load average (1 min) when the runs started: %s; when they ended: %s. "
       "The machine may be shared with other work; a load well above 0 inflates the "
-      "times, the peers' and ours alike." % (args.load_start, read_load()))
+      "times, the peers' and ours alike." % (args.load_start, args.load_end or read_load()))
     w("")
+    if args.note:
+        w(args.note)
+        w("")
     w("All runs are sequential (one core busy at a time). The full run of `run.sh` took "
       "%.0f s, of which %.0f s running the peers." % (args.script_seconds or 0, elapsed_runs)
       if args.script_seconds else
@@ -390,6 +519,25 @@ def write_report(args, results, commands, elapsed_runs):
             cid, lam, v0, "2000 pi = %.4f" % t_end if cid == "1000p" else "%g" % t_end,
             peer_common.describe_counts(peer_common.count_kinds(exact))))
     w("")
+    general_present = [c for c in GENERAL_CASES
+                       if os.path.exists(os.path.join(results, "ours-%s.json" % c["id"]))]
+    if general_present:
+        w("The general model's cases ([docs/theory.md](theory.md) section 7; "
+          "`m x'' + c x' + k x = F0 + B sin(w t) - f` with `m = B = w = 1`, sliding friction "
+          "R, static friction Rs; from rest at x = 0):")
+        w("")
+        w("| case | R | Rs | k | c | F0 | v0 | t_end | exact events |")
+        w("|---|---|---|---|---|---|---|---|---|")
+        for c in general_present:
+            ours_g, exact_g, rows_g = build_rows(results, c["id"])
+            case_rows[c["id"]] = (ours_g, exact_g, rows_g)
+            w("| %s | %g | %g | %g | %g | %g | %g | %s | %s |" % (
+                c["id"], c["lambda"], c["static"], c["stiffness"], c["damping"],
+                c["force_offset"], c["v0"],
+                "60 pi = %.4f" % c["t_end"] if abs(c["t_end"] - 60 * math.pi) < 1e-9
+                else "%g" % c["t_end"],
+                peer_common.describe_counts(peer_common.count_kinds(exact_g))))
+        w("")
 
     # --- the 1000-period case and the target
     ours, exact, rows = case_rows["1000p"]
@@ -508,6 +656,27 @@ def write_report(args, results, commands, elapsed_runs):
         w(table(rows, ours["time_s"], True))
         w("")
 
+    # --- the general model
+    if general_present:
+        w("## The general model: spring, damper, static friction")
+        w("")
+        w("The issue asks for one spring + damper + Coulomb case and one static > kinetic "
+          "case against scipy and CVODE. The peers integrate the switched system with the "
+          "model's own rules (slip: `x'' = F0 + sin t - c x' - k x - s R` with the root "
+          "`s v = 0`; stick: `y' = 0` with the root `|N| - Rs`, `N = F0 + sin t - k x`; at "
+          "`v = 0`: stick if `|N| <= Rs`, else slip in the direction of N), with the same "
+          "methods, tolerances, guards and step cap as on the seed's cases. The reference "
+          "event times are the 50-digit engine's. Our engine takes its general path here, "
+          "which costs more per event than the seed's closed-form critical times: the "
+          "ratios below are smaller than on the seed's cases, and are stated as measured.")
+        w("")
+        seed_ours = case_rows["1000p"][0] if "1000p" in case_rows else None
+        for c in general_present:
+            ours_g, exact_g, rows_g = case_rows[c["id"]]
+            w("### Case %s: %s" % (c["id"], c["title"]))
+            w("")
+            general_case_section(w, c, ours_g, exact_g, rows_g, seed_ours)
+
     # --- failures and notes
     w("## Failures and limits")
     w("")
@@ -536,6 +705,11 @@ def write_report(args, results, commands, elapsed_runs):
             elif not r["sequence_ok"]:
                 failures.append("- Case %s, %s %s: wrong sequence: %s." % (
                     cid, r["code"], r["setting"], r["sequence"]))
+    if general_present:
+        failures.append("- The general model's cases (%s) are not run by Siconos (the relay "
+                        "formulation of `siconos_peer.py` is the seed's model) or by our "
+                        "stiff-spring simulator (a model of the seed's problem only)." %
+                        ", ".join(c["id"] for c in general_present))
     if failures:
         out.extend(failures)
     else:
@@ -576,7 +750,10 @@ def write_report(args, results, commands, elapsed_runs):
       "summed over all `solve_ivp` calls; CVODE: `CVodeGetNumRhsEvals` and "
       "`CVodeGetNumGEvals` summed over all restarts; Siconos and the stiff spring: time "
       "steps; ours: closed-form velocity evaluations (`Summary::sign_tests + "
-      "root_function_calls`), each about one `cos` and a few flops.")
+      "root_function_calls`), each about one `cos` and a few flops; on the general model's "
+      "cases the same counters count evaluations of the phase's closed form and its "
+      "derivatives (in the certified search and in root polishing), each a few `exp`, "
+      "`sin` and `cos`.")
     w("- **Event-time error**: the peer's events (stop = a slip ends in a stick, breakaway "
       "= a stick ends, reversal = v = 0 and the slip goes on the other way) are matched "
       "one to one with the exact engine's events when the sequences of kinds agree, else "
@@ -611,7 +788,12 @@ def write_report(args, results, commands, elapsed_runs):
       "scipy's root); and a slip from rest whose `v = 0` event "
       "fires at its own start (the first step was below the resolution of `t`) is retried "
       "once with `first_step = 1e-4`. A run with 10 events in a row at the same `t` stops "
-      "as failed (a Zeno loop).")
+      "as failed (a Zeno loop). The general model's cases use the same setup with the "
+      "model's own rules: the slip's right-hand side gains `F0 - c v - k x` (and the "
+      "Jacobian `[[0, 1], [-k, -c]]`), the stick's root is `|N| - Rs` with "
+      "`N = F0 + sin t - k x` at the stuck position, the decision at `v = 0` compares "
+      "`|N|` with Rs, and a slip after a breakaway starts from the first double past "
+      "`|N| = Rs` (scipy).")
     siconos_fine = os.path.join(results, "siconos-mj-h%s-1000p.json" %
                                 SICONOS_STEPS_1000P.split(",")[-1])
     estimate = ""
@@ -622,7 +804,7 @@ def write_report(args, results, commands, elapsed_runs):
         estimate = " (h = %s would take about %s there at %s per step)" % (
             finest, fmt_time(per_step * r["t_end"] / float(finest)), fmt_time(per_step))
     w("- **Time limits**: a run on the 1000-period case stops after %g s of wall time (a "
-      "30-unit case after %g s); such a run is marked *stopped*, its error and sequence "
+      "30-unit case or a general-model case after %g s); such a run is marked *stopped*, its error and sequence "
       "cover the part it did, and its ratio uses the time extrapolated linearly to the "
       "whole horizon. Siconos runs h = %s on the 30-unit cases and h = %s on the "
       "1000-period case%s." % (
@@ -635,9 +817,18 @@ def write_report(args, results, commands, elapsed_runs):
       "repository root (it installs the Debian packages it needs, builds, and rewrites "
       "this page):")
     w("")
+    settings = args.run_settings
     w("```sh")
-    w("bash tests/peers/run.sh")
+    w(" ".join(settings + ["bash tests/peers/run.sh"]))
     w("```")
+    if settings or args.note:
+        w("")
+        w("(%s%s; see [tests/peers/README.md](../tests/peers/README.md). The plain "
+          "`bash tests/peers/run.sh` builds the working tree in `build/release` through the "
+          "preset and runs `apt-get`.)" % (
+              "run with " + ", ".join("`%s`" % x for x in settings) if settings else "",
+              ("%s`PEERS_NOTE` set to the paragraph on the shared machine above" %
+               (" and " if settings else "")) if args.note else ""))
     w("")
     w("It ran these (temporary directories shortened to `$TMP`):")
     w("")
@@ -665,15 +856,38 @@ def main():
     parser.add_argument("--prelude", default="", help="file with the commands run.sh ran first")
     parser.add_argument("--script-start", type=float, default=0.0,
                         help="epoch seconds when run.sh started (for the total time)")
+    parser.add_argument("--build-dir", default="",
+                        help="the project's build directory when not the preset's "
+                             "(run.sh's PEERS_BUILD_DIR), for the report")
+    parser.add_argument("--source-head", default="",
+                        help="the commit the project was built from with run.sh's "
+                             "PEERS_SOURCE=HEAD (git archive HEAD)")
+    parser.add_argument("--note-file", default="",
+                        help="a file with a paragraph for the machine section (run.sh's "
+                             "PEERS_NOTE)")
     parser.add_argument("--report-only", action="store_true",
                         help="only rewrite the report from existing results")
     args = parser.parse_args()
+    args.build_desc = "`cmake --preset release`"
+    if args.build_dir:
+        args.build_desc = "`cmake -S . -B %s -DCMAKE_BUILD_TYPE=Release`" % (
+            args.build_dir.replace(args.repo.rstrip("/") + "/", ""))
+    args.note = ""
+    if args.note_file and os.path.exists(args.note_file):
+        with open(args.note_file) as f:
+            args.note = f.read().strip()
     args.prelude_commands = []
     if args.prelude and os.path.exists(args.prelude):
         with open(args.prelude) as f:
             args.prelude_commands = [l.rstrip("\n") for l in f if l.strip()]
     os.makedirs(args.results, exist_ok=True)
     args.load_start = read_load()
+    args.load_end = ""
+    # run.sh's settings (environment), for the report's command line.
+    args.run_settings = [
+        "%s=%s" % (k, shlex.quote(os.environ[k].replace(args.repo.rstrip("/") + "/", "")))
+        for k in ("PEERS_SOURCE", "PEERS_BUILD_DIR", "PEERS_DEADLINE", "PEERS_DEADLINE_1000P",
+                  "PEERS_SKIP_APT") if os.environ.get(k)]
     commands = []
     start = time.perf_counter()
     log_path = os.path.join(args.results, "commands.json")
@@ -683,6 +897,12 @@ def main():
                         "--t-end", repr(t_end),
                         "--out", os.path.join(args.results, "ours-%s.json" % cid),
                         "--stiff-record", os.path.join(args.results, "stiff-%s.bin" % cid)],
+                       commands)
+        for c in GENERAL_CASES:  # no stiff spring (it models the seed's problem only)
+            run_logged([os.path.join(args.bin, "ours"), "--lambda", repr(c["lambda"]),
+                        "--v0", repr(c["v0"]), "--t-end", repr(c["t_end"])]
+                       + peer_common.general_model_options(peer_common.case_params(c["id"]))
+                       + ["--out", os.path.join(args.results, "ours-%s.json" % c["id"])],
                        commands)
         for cid, lam, v0, t_end, _ in CASES:
             deadline = args.deadline_1000p if cid == "1000p" else args.deadline
@@ -694,7 +914,20 @@ def main():
                                 "--deadline", repr(deadline),
                                 "--out", os.path.join(args.results, "cvode-%s-%s-%s.json" % (
                                     method, tol, cid))], commands)
+        for c in GENERAL_CASES:
+            for method in ("adams", "bdf"):
+                for tol, (rtol, atol) in CVODE_TOLS.items():
+                    run_logged([os.path.join(args.bin, "cvode_peer"), "--lambda",
+                                repr(c["lambda"]), "--v0", repr(c["v0"]),
+                                "--t-end", repr(c["t_end"])]
+                               + peer_common.general_model_options(
+                                   peer_common.case_params(c["id"]))
+                               + ["--method", method, "--rtol", repr(rtol), "--atol", repr(atol),
+                                  "--deadline", repr(args.deadline),
+                                  "--out", os.path.join(args.results, "cvode-%s-%s-%s.json" % (
+                                      method, tol, c["id"]))], commands)
         run_logged([PYTHON, os.path.join(HERE, "scipy_peer.py"), "--out", args.results,
+                    "--cases", ",".join(peer_common.ALL_CASE_IDS),
                     "--deadline", repr(args.deadline),
                     "--deadline-1000p", repr(args.deadline_1000p)], commands)
         run_logged([PYTHON, os.path.join(HERE, "siconos_peer.py"), "--out", args.results,
@@ -702,13 +935,37 @@ def main():
                     "--deadline", repr(args.deadline),
                     "--deadline-1000p", repr(args.deadline_1000p)], commands)
         elapsed = time.perf_counter() - start
+        args.load_end = read_load()
+        args.script_seconds = (time.time() - args.script_start) if args.script_start else None
+        # Everything the report needs besides the results, so that --report-only can
+        # rewrite it as it was.
         peer_common.write_json(log_path, {"commands": commands, "elapsed_s": elapsed,
-                                          "load_start": args.load_start})
+                                          "load_start": args.load_start,
+                                          "load_end": args.load_end,
+                                          "script_seconds": args.script_seconds,
+                                          "prelude_commands": args.prelude_commands,
+                                          "run_settings": args.run_settings,
+                                          "tmp_prefix": args.tmp_prefix,
+                                          "build_desc": args.build_desc, "note": args.note,
+                                          "source_head": args.source_head})
     else:
         log = load(log_path)
         commands, elapsed = log["commands"], log["elapsed_s"]
         args.load_start = log.get("load_start", "?")
-    args.script_seconds = (time.time() - args.script_start) if args.script_start else None
+        args.load_end = log.get("load_end", "")
+        args.script_seconds = log.get("script_seconds")
+        if not args.prelude_commands:
+            args.prelude_commands = log.get("prelude_commands", [])
+        if "run_settings" in log:
+            args.run_settings = log["run_settings"]
+        if not args.tmp_prefix:
+            args.tmp_prefix = log.get("tmp_prefix", "")
+        if not args.build_dir:
+            args.build_desc = log.get("build_desc", args.build_desc)
+        if not args.note:
+            args.note = log.get("note", "")
+        if not args.source_head:
+            args.source_head = log.get("source_head", "")
     write_report(args, args.results, commands, elapsed)
 
 

@@ -19,6 +19,16 @@ call from the event state, with v set to 0 exactly. During a stick the step is c
 past a whole window |sin t| > lambda (1.59 wide at lambda = 0.7) and the event would be
 missed. Implicit methods (Radau, LSODA) get the analytic Jacobian.
 
+The general model (docs/theory.md section 7; the cases of peer_common.GENERAL_CASES) is
+integrated the same way with the model's own rules, N = F0 + sin t - k x:
+
+  slip, direction s: x' = v, v' = F0 + sin t - c v - k x - s R; terminal event s v = 0
+  stick:             y' = 0; terminal event |N| - Rs = 0, direction +1
+  at v = 0:          |N| <= Rs -> stick (a stop); else slip in the direction of N
+
+and a breakaway slips in the direction of N, from the first double past |N| = Rs. The
+seed's cases keep the code above (the same numbers, the same cost).
+
 A slip from rest whose v = 0 event fires at its own start time (the first step was below
 the resolution of t, so v never left 0) is retried once with first_step = 1e-4. A run
 that produces 10 events in a row at the same t stops and reports it (a Zeno loop).
@@ -28,7 +38,7 @@ event-function evaluations, the slip starts moved past the crossing ("nudges") a
 the retried slips ("retries"), and the largest step taken in a slip. A run stops at its deadline (wall clock) and says how far
 it got.
 
-Usage: /usr/bin/python3 scipy_peer.py --out DIR [--cases 10.1,10.2,...]
+Usage: /usr/bin/python3 scipy_peer.py --out DIR [--cases 10.1,10.2,...,spring-damper,...]
        [--methods RK45,...] [--tols loose,tight] [--deadline-1000p S] [--min-time S]
 Writes DIR/scipy-<method>-<tol>-<case>.json.
 """
@@ -59,15 +69,31 @@ def sign_of(value):
     return 1 if value > 0 else -1 if value < 0 else 0
 
 
-def run(lam, v0, t_end, method, rtol, atol, deadline):
+def run(lam, v0, t_end, method, rtol, atol, deadline, general=None):
+    """One run. general: None for the seed's model, else a dict with the general model's
+    static (Rs), stiffness (k), damping (c) and force_offset (F0); lam is R."""
     start = time.perf_counter()
+    if general is None:
+        rs = lam
+
+        def net(tt, xx):  # the force that decides at rest
+            return math.sin(tt)
+    else:
+        rs, k, c, f0 = (float(general["static"]), float(general["stiffness"]),
+                        float(general["damping"]), float(general["force_offset"]))
+
+        def net(tt, xx):  # N = F(t) - k x
+            return f0 + math.sin(tt) - k * xx
     counts = {"nfev": 0, "njev": 0, "nlu": 0, "gev": 0, "calls": 0, "nudges": 0,
               "retries": 0, "max_slip_step": 0.0}
     events = []
     t, x, v = 0.0, 0.0, float(v0)
-    sign = sign_of(v) if v != 0 else (0 if abs(math.sin(t)) <= lam else sign_of(math.sin(t)))
+    sign = sign_of(v) if v != 0 else (0 if abs(net(t, x)) <= rs else sign_of(net(t, x)))
     zero2 = np.zeros(2)
-    jac_slip = np.array([[0.0, 1.0], [0.0, 0.0]])
+    if general is None:
+        jac_slip = np.array([[0.0, 1.0], [0.0, 0.0]])
+    else:
+        jac_slip = np.array([[0.0, 1.0], [-k, -c]])
     jac_stick = np.zeros((2, 2))
     failure = ""
     finished = False
@@ -77,9 +103,14 @@ def run(lam, v0, t_end, method, rtol, atol, deadline):
             def fun(tt, y):
                 return zero2
 
-            def event(tt, y):
-                counts["gev"] += 1
-                return abs(math.sin(tt)) - lam
+            if general is None:
+                def event(tt, y):
+                    counts["gev"] += 1
+                    return abs(math.sin(tt)) - lam
+            else:
+                def event(tt, y):  # y[0] stays x during the stick
+                    counts["gev"] += 1
+                    return abs(f0 + math.sin(tt) - k * y[0]) - rs
 
             event.terminal = True
             event.direction = 1
@@ -89,8 +120,12 @@ def run(lam, v0, t_end, method, rtol, atol, deadline):
         else:
             s = sign
 
-            def fun(tt, y, s=s):
-                return np.array([y[1], math.sin(tt) - s * lam])
+            if general is None:
+                def fun(tt, y, s=s):
+                    return np.array([y[1], math.sin(tt) - s * lam])
+            else:
+                def fun(tt, y, s=s):
+                    return np.array([y[1], f0 + math.sin(tt) - c * y[1] - k * y[0] - s * lam])
 
             def event(tt, y, s=s):
                 counts["gev"] += 1
@@ -148,12 +183,12 @@ def run(lam, v0, t_end, method, rtol, atol, deadline):
             # ever (seen with LSODA, loose, on the 1000-period case). Start the slip from
             # the first double past the crossing, which is where CVODE puts its roots (the
             # event time reported stays scipy's root).
-            while abs(math.sin(te)) - lam <= 0 and counts["nudges"] < 10**6:
+            while abs(net(te, float(ye[0]))) - rs <= 0 and counts["nudges"] < 10**6:
                 te = math.nextafter(te, math.inf)
                 counts["nudges"] += 1
-        force = math.sin(te)
+        force = net(te, float(ye[0]))
         if sign != 0:
-            if abs(force) <= lam:
+            if abs(force) <= rs:
                 kind, sign = "stop", 0
             elif sign_of(force) != sign:
                 kind, sign = "reversal", sign_of(force)
@@ -177,7 +212,8 @@ def run(lam, v0, t_end, method, rtol, atol, deadline):
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--out", required=True)
-    parser.add_argument("--cases", default=",".join(c[0] for c in peer_common.CASES))
+    parser.add_argument("--cases", default=",".join(peer_common.ALL_CASE_IDS),
+                        help="case ids of peer_common.CASES and GENERAL_CASES")
     parser.add_argument("--methods", default=",".join(METHODS))
     parser.add_argument("--tols", default="loose,tight")
     parser.add_argument("--deadline", type=float, default=60.0,
@@ -189,7 +225,9 @@ def main():
     warnings.simplefilter("ignore")
     os.makedirs(args.out, exist_ok=True)
     for case_id in args.cases.split(","):
-        cid, lam, v0, t_end, _ = peer_common.CASE_BY_ID[case_id]
+        params = peer_common.case_params(case_id)
+        cid, lam, v0, t_end = params["id"], params["lambda"], params["v0"], params["t_end"]
+        general = params if params["general"] else None
         deadline = args.deadline_1000p if cid == "1000p" else args.deadline
         for method in args.methods.split(","):
             for tol in args.tols.split(","):
@@ -197,7 +235,7 @@ def main():
                 times = []
                 while True:
                     t0 = time.perf_counter()
-                    result = run(lam, v0, t_end, method, rtol, atol, deadline)
+                    result = run(lam, v0, t_end, method, rtol, atol, deadline, general)
                     times.append(time.perf_counter() - t0)
                     # Repeat short runs (median of >= 3, >= min_time in all); a run that
                     # alone takes over 1 s is not repeated.
@@ -210,6 +248,9 @@ def main():
                     "t_end": t_end, "time_s": float(np.median(times)), "reps": len(times),
                     "deadline_s": deadline,
                 }
+                if general is not None:
+                    record.update({key: params[key] for key in
+                                   ("static", "stiffness", "damping", "force_offset")})
                 record.update(result["counts"])
                 record.update({k: result[k] for k in ("t_reached", "finished", "failure")})
                 record["events"] = result["events"]
