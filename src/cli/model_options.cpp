@@ -38,7 +38,11 @@ CliError to_bad_input(const InvalidInput& error, const TypedInputs& inputs) {
 }
 
 void ModelOptions::add_to(CLI::App& command, bool friction_required) {
-  friction_required_ = friction_required;
+  add_to(command, friction_required, Selection{});
+}
+
+void ModelOptions::add_to(CLI::App& command, bool friction_required, const Selection& selection) {
+  friction_required_ = friction_required && selection.friction;
   const char* group = "Model (any consistent units; force = mass * length / time^2)";
   const auto add = [&](const char* name, std::string& text, const char* help, const char* type) {
     return numeric(command.add_option(name, text, help))->type_name(type)->group(group);
@@ -48,17 +52,22 @@ void ModelOptions::add_to(CLI::App& command, bool friction_required) {
       ->capture_default_str();
   add("--omega", omega_, "angular frequency w of the force [rad/time]; > 0", "W")
       ->capture_default_str();
-  friction_option_ =
-      add("--friction", friction_, "Coulomb friction force R [force]; >= 0 (or --lambda)", "R");
-  lambda_option_ = add("--lambda", lambda_,
-                       "friction ratio lambda = R / B [1]; >= 0, needs B > 0 (or --friction)", "L");
-  friction_option_->excludes(lambda_option_);
-  static_friction_option_ =
-      add("--static-friction", static_friction_,
-          "static friction force Rs [force]; >= R (default R; or --static-lambda)", "RS");
-  static_lambda_option_ = add("--static-lambda", static_lambda_,
-                              "static friction as Rs = LS * B [1]; needs B > 0", "LS");
-  static_friction_option_->excludes(static_lambda_option_);
+  if (selection.friction) {
+    friction_option_ =
+        add("--friction", friction_, "Coulomb friction force R [force]; >= 0 (or --lambda)", "R");
+    lambda_option_ = add("--lambda", lambda_,
+                         "friction ratio lambda = R / B [1]; >= 0, needs B > 0 (or --friction)",
+                         "L");
+    friction_option_->excludes(lambda_option_);
+  }
+  if (selection.static_friction) {
+    static_friction_option_ =
+        add("--static-friction", static_friction_,
+            "static friction force Rs [force]; >= R (default R; or --static-lambda)", "RS");
+    static_lambda_option_ = add("--static-lambda", static_lambda_,
+                                "static friction as Rs = LS * B [1]; needs B > 0", "LS");
+    static_friction_option_->excludes(static_lambda_option_);
+  }
   add("--stiffness", stiffness_, "restoring spring k [force/length]; >= 0", "K")
       ->capture_default_str();
   add("--damping", damping_, "viscous damper c [force*time/length]; >= 0", "C")
@@ -74,8 +83,9 @@ void ModelOptions::add_to(CLI::App& command, bool friction_required) {
       ->allow_extra_args(false);
   add("--x0", x0_, "initial position [length]", "X")->capture_default_str();
   add("--v0", v0_, "initial velocity [length/time]", "V")->capture_default_str();
-  add("--t0", t0_, "initial time [time]; the force is B sin(w t), not B sin(w (t - t0))", "T0")
-      ->capture_default_str();
+  if (selection.t0)
+    add("--t0", t0_, "initial time [time]; the force is B sin(w t), not B sin(w (t - t0))", "T0")
+        ->capture_default_str();
 }
 
 bool ModelOptions::lambda_given() const { return lambda_option_ && lambda_option_->count() > 0; }

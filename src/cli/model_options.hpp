@@ -61,9 +61,20 @@ decltype(auto) naming_options(const TypedInputs& inputs, F&& f) {
 // object must outlive parsing.
 class ModelOptions {
  public:
+  // Which options add_to registers (all by default). A command that sets the
+  // friction itself for every run (sweep) leaves out --friction/--lambda and
+  // --static-friction/--static-lambda, and one whose runs all start at t = 0
+  // leaves out --t0; model() then takes R = 0, no Rs and t0 = 0.
+  struct Selection {
+    bool friction = true;         // --friction, --lambda
+    bool static_friction = true;  // --static-friction, --static-lambda
+    bool t0 = true;               // --t0
+  };
+
   // friction_required = false: neither --friction nor --lambda means R = 0
   // (for commands where an axis or sweep sets the friction).
   void add_to(CLI::App& command, bool friction_required = true);
+  void add_to(CLI::App& command, bool friction_required, const Selection& selection);
 
   // The model, parsed and validated; throws bad input naming the option.
   Model model() const;

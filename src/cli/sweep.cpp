@@ -1,7 +1,9 @@
-// `frictionref sweep`: the regime found by simulation against the regime
-// from the threshold lambda*, with the stuck fraction, slide and stops per
-// period, for a grid of lambdas (library: frictionref/sweep.hpp). All cores
-// by default; a progress line on a terminal for long runs.
+// `frictionref sweep`: the regime found by simulation against the regime a
+// closed form gives (the threshold lambda* for the seed's model, Den Hartog's
+// non-stop solution for a spring without damper, none otherwise), with the
+// stuck fraction, slide and stops per period, for a grid of lambdas and any
+// model (library: frictionref/sweep.hpp). All cores by default; a progress
+// line on a terminal for long runs.
 #include "frictionref/sweep.hpp"
 
 #include <fmt/format.h>
@@ -14,15 +16,18 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "atomic_output.hpp"
 #include "command.hpp"
 #include "csv_format.hpp"
 #include "figure.hpp"
+#include "frictionref/den_hartog.hpp"
 #include "frictionref/steady_state.hpp"
 #include "frictionref/version.hpp"
 #include "model_options.hpp"
+#include "model_title.hpp"
 #include "progress_line.hpp"
 
 namespace frictionref::cli {
@@ -30,21 +35,51 @@ namespace {
 
 constexpr double max_lambda = 1e6;  // every lambda >= 1 stops; larger adds nothing
 constexpr double max_speed = 1e6;   // |v0| [B/(m w)]
+constexpr double max_static_ratio = 1e6;  // Rs / R
 constexpr double max_points = 1e7;  // about 40 bytes of results per point
 constexpr double max_threads = 256;
 constexpr double max_total_periods = 1e9;    // points * periods: a typo must not run for days
 constexpr std::size_t max_plotted = 20'000;  // evenly spaced rows, plus every change
 
 struct SweepCliOptions {
+  // The model of every run but its friction (R = lambda B, Rs = ratio R) and
+  // start time (t = 0): --mass ... --harmonic, --x0, --v0.
+  ModelOptions model;
   std::string lambda_from;
   std::string lambda_to;
   std::string points;
-  std::string v0 = "0";
+  std::string static_ratio = "1";
   std::string periods = "100";
   std::string threads;  // empty: all cores
   OutputFileOption output;
   std::string plot;
+  // Model options that the sweep sets itself: registered out of the help
+  // only to say so when one is given.
+  struct Refused {
+    std::string name, value;
+    CLI::Option* option = nullptr;
+  };
+  std::vector<Refused> refused;
 };
+
+// "--lambda 0.3" on a sweep: why it is not taken, and what to use instead.
+void refuse_fixed_options(const SweepCliOptions& typed) {
+  for (const SweepCliOptions::Refused& option : typed.refused) {
+    if (option.option->count() == 0) continue;
+    const std::string& name = option.name;
+    // "--lambda = 0.3", or "--lambda" when given without a value.
+    const std::string given = option.value.empty() ? name : name + " = " + option.value;
+    if (name == "--t0")
+      throw bad_input(given + ": not a sweep option; every run starts at t = 0");
+    if (name == "--friction" || name == "--lambda")
+      throw bad_input(given +
+                      ": not a sweep option; the sweep sets R = lambda B for lambda from "
+                      "--lambda-from to --lambda-to");
+    throw bad_input(given +
+                    ": not a sweep option; the sweep sets Rs = S R at every lambda, S from "
+                    "--static-ratio");
+  }
+}
 
 double finite_lambda(const TypedNumber& typed) {
   const double value = parse_number(typed);
@@ -77,41 +112,97 @@ std::uint64_t whole_number(const TypedNumber& typed, double max, const char* max
   return static_cast<std::uint64_t>(value);
 }
 
+// The model line: the base model with the friction as a function of each
+// row's lambda. The seed's line (m = B = w = 1, no general term) is the one
+// the sweep always wrote.
+std::string model_line(const SweepOptions& options) {
+  const Model& base = options.base;
+  const std::string friction =
+      base.amplitude == 1 ? std::string("lambda") : fmt::format("lambda*{}", base.amplitude);
+  std::string fields = fmt::format("mass={} amplitude={} omega={} friction={} lambda=lambda",
+                                   base.mass, base.amplitude, base.omega, friction);
+  if (options.static_ratio != 1)
+    fields += fmt::format(" static_friction={}*friction", options.static_ratio);
+  if (base.stiffness != 0) fields += fmt::format(" stiffness={}", base.stiffness);
+  if (base.damping != 0) fields += fmt::format(" damping={}", base.damping);
+  if (base.force_offset != 0) fields += fmt::format(" force_offset={}", base.force_offset);
+  for (const Harmonic& h : base.harmonics)
+    fields += fmt::format(" harmonic={},{},{}", h.amplitude, h.omega, h.phase);
+  return fields + fmt::format(" x0={} v0={} t0=0", base.x0, options.v0);
+}
+
+// Den Hartog's frequency ratio beta = w / sqrt(k / m) of the base model.
+double frequency_ratio(const Model& base) {
+  return base.omega / std::sqrt(base.stiffness / base.mass);
+}
+
+std::string regime_text(const SweepPoint& p) {
+  return p.regime_threshold ? std::string(to_string(*p.regime_threshold)) : std::string("n/a");
+}
+
 void write_table(std::FILE* out, const std::vector<SweepPoint>& points, const SweepOptions& options,
                  const std::string& command) {
-  const SweepWindow window = sweep_window(options.periods);
-  std::size_t differ = 0;
-  for (const SweepPoint& p : points) differ += !p.regimes_agree();
+  const SweepWindow window = sweep_window(options.periods, options.base);
+  const SweepThreshold rule = sweep_threshold_rule(options);
+  std::size_t differ = 0, known = 0;
+  for (const SweepPoint& p : points) {
+    differ += p.regimes_differ();
+    known += p.regime_threshold.has_value();
+  }
   fmt::print(out, "# frictionref {}\n", version);
-  fmt::print(out,
-             "# model: mass=1 amplitude=1 omega=1 friction=lambda lambda=lambda x0=0 v0={} t0=0\n",
-             options.v0);
+  fmt::print(out, "# model: {}\n", model_line(options));
   fmt::print(out, "# command: {}\n", command);
+  std::string threshold;
+  if (rule == SweepThreshold::lambda_star) {
+    threshold = fmt::format("{}", regime_threshold());
+  } else if (rule == SweepThreshold::den_hartog) {
+    const double beta = frequency_ratio(options.base);
+    threshold = fmt::format("den-hartog frequency_ratio={} den_hartog_boundary={}", beta,
+                            den_hartog_boundary(beta, options.static_ratio));
+  } else {
+    threshold = "none";
+  }
   fmt::print(out,
              "# sweep: lambda_from={} lambda_to={} points={} periods={} measured_from={} "
              "measured_to={} threshold={}\n",
              points.front().lambda, points.back().lambda, points.size(), options.periods,
-             window.begin, window.end, regime_threshold());
-  fmt::print(out,
-             "# regimes: simulated and threshold differ at {} of {} lambdas (expected only for 0 < "
-             "lambda - lambda* <= {:.3g}, dead bands shorter than the engine's time resolution)\n",
-             differ, points.size(), sweep_unresolved_distance(options.periods));
+             window.begin, window.end, threshold);
+  if (rule == SweepThreshold::lambda_star) {
+    fmt::print(out,
+               "# regimes: simulated and threshold differ at {} of {} lambdas (expected only for "
+               "0 < lambda - lambda* <= {:.3g}, dead bands shorter than the engine's time "
+               "resolution)\n",
+               differ, points.size(), sweep_unresolved_distance(options.periods));
+  } else if (rule == SweepThreshold::den_hartog) {
+    fmt::print(out,
+               "# regimes: Den Hartog's closed form gives the regime (continuous: its non-stop "
+               "solution exists and is stable) at {} of {} lambdas, n/a at the others; simulated "
+               "and threshold differ at {} of the {}\n",
+               known, points.size(), differ, known);
+  } else {
+    fmt::print(out,
+               "# regimes: no closed form gives the regime of this model (regime_threshold is "
+               "n/a); regime_simulated is the simulation's alone\n");
+  }
   std::fputs(
       "lambda,regime_simulated,regime_threshold,stuck_fraction,slide_per_period,"
       "stops_per_period,reversals_per_period\n",
       out);
   for (const SweepPoint& p : points) {
     fmt::print(out, "{},{},{},{},{},{},{}\n", p.lambda, to_string(p.regime_simulated),
-               to_string(p.regime_threshold), p.stuck_fraction, p.slide_per_period,
-               p.stops_per_period, p.reversals_per_period);
+               regime_text(p), p.stuck_fraction, p.slide_per_period, p.stops_per_period,
+               p.reversals_per_period);
   }
 }
 
 // Stuck fraction and stops per period against lambda, the closed-form steady
-// state as the reference line, lambda* dashed. Long sweeps are thinned to
-// about max_plotted evenly spaced points plus every point where a count or
-// the regime changes, so jumps stay sharp.
+// state as the reference line (the seed's model only), lambda* (or Den
+// Hartog's boundary) dashed. Long sweeps are thinned to about max_plotted
+// evenly spaced points plus every point where a count or the regime changes,
+// so jumps stay sharp.
 Figure sweep_figure(const std::vector<SweepPoint>& points, const SweepOptions& options) {
+  const SweepThreshold rule = sweep_threshold_rule(options);
+  const bool seed = rule == SweepThreshold::lambda_star;
   const std::size_t n = points.size();
   const std::size_t stride = (n + max_plotted - 1) / max_plotted;
   const auto differs = [&](std::size_t i, std::size_t j) {
@@ -131,44 +222,88 @@ Figure sweep_figure(const std::vector<SweepPoint>& points, const SweepOptions& o
                       (i + 1 < n && differs(i, i + 1));
     if (!keep) continue;
     const SweepPoint& p = points[i];
-    Model model;
-    model.friction = p.lambda;
-    const SteadyState steady = steady_state(model);
-    stuck_exact.x.push_back(p.lambda);
-    stuck_exact.y.push_back(steady.stuck_fraction);
+    if (seed) {
+      // The seed's steady state depends on lambda alone.
+      Model model;
+      model.friction = p.lambda;
+      const SteadyState steady = steady_state(model);
+      stuck_exact.x.push_back(p.lambda);
+      stuck_exact.y.push_back(steady.stuck_fraction);
+      stops_exact.x.push_back(p.lambda);
+      stops_exact.y.push_back(steady.stops_per_period);
+    }
     stuck.x.push_back(p.lambda);
     stuck.y.push_back(p.stuck_fraction);
-    stops_exact.x.push_back(p.lambda);
-    stops_exact.y.push_back(steady.stops_per_period);
     stops.x.push_back(p.lambda);
     stops.y.push_back(p.stops_per_period);
     reversals.x.push_back(p.lambda);
     reversals.y.push_back(p.reversals_per_period);
   }
+  std::vector<Series> stuck_series{stuck}, stops_series{stops, reversals};
+  if (seed) {
+    stuck_series.insert(stuck_series.begin(), stuck_exact);
+    stops_series.insert(stops_series.begin(), stops_exact);
+  }
   Panel stuck_panel = make_panel(
-      fmt::format("fraction of the period at rest: simulated (red points, last of {} periods), "
-                  "closed-form steady state (black line)",
-                  options.periods),
-      "lambda = R / B [1]", "stuck fraction [1]", {stuck_exact, stuck});
+      seed ? fmt::format("fraction of the period at rest: simulated (red points, last of {} "
+                         "periods), closed-form steady state (black line)",
+                         options.periods)
+           : fmt::format("fraction of the period at rest: simulated (red points, last of {} "
+                         "periods)",
+                         options.periods),
+      "lambda = R / B [1]", "stuck fraction [1]", stuck_series);
   Panel stops_panel = make_panel(
-      "per forcing period: stops into rest (red points; closed form: black line), reversals "
-      "without rest (blue points)",
-      "lambda = R / B [1]", "stops, reversals per period [1]", {stops_exact, stops, reversals});
-  const double threshold = regime_threshold();
-  const bool marked = !points.empty() && points.front().lambda <= threshold &&
-                      threshold <= points.back().lambda &&
-                      points.front().lambda < points.back().lambda;
-  if (marked) stuck_panel.vertical_lines = stops_panel.vertical_lines = {threshold};
+      seed ? "per forcing period: stops into rest (red points; closed form: black line), "
+             "reversals without rest (blue points)"
+           : "per forcing period: stops into rest (red points), reversals without rest (blue "
+             "points)",
+      "lambda = R / B [1]", "stops, reversals per period [1]", stops_series);
+  double line = std::numeric_limits<double>::quiet_NaN();
+  std::string line_name;
+  if (seed) {
+    line = regime_threshold();
+    line_name = fmt::format("lambda* = {}", line);
+  } else if (rule == SweepThreshold::den_hartog) {
+    line = den_hartog_boundary(frequency_ratio(options.base), options.static_ratio);
+    line_name = fmt::format("Den Hartog's non-stop boundary lambda = {}", line);
+  }
+  const bool marked = !points.empty() && points.front().lambda <= line &&
+                      line <= points.back().lambda && points.front().lambda < points.back().lambda;
+  if (marked) stuck_panel.vertical_lines = stops_panel.vertical_lines = {line};
+  const Model& base = options.base;
+  const bool unit = base.mass == 1 && base.amplitude == 1 && base.omega == 1 && base.x0 == 0;
   Figure figure;
-  figure.title = fmt::format(
-      "sweep: m=B=w=1, v0={}, measured over the last of {} periods; "
-      "lambda* = {}{}",
-      options.v0, options.periods, threshold, marked ? " (dashed)" : "");
+  if (seed && unit) {
+    figure.title = fmt::format(
+        "sweep: m=B=w=1, v0={}, measured over the last of {} periods; "
+        "{}{}",
+        options.v0, options.periods, line_name, marked ? " (dashed)" : "");
+  } else {
+    Model shown = base;
+    shown.friction = 0;  // each row's lambda B
+    if (options.static_ratio != 1) shown.static_friction = 0;
+    shown.v0 = options.v0;
+    std::string title = model_title(shown);
+    // "R=0 (lambda=0)" stands for every row's friction.
+    const std::string fixed = fmt::format("R=0 (lambda=0)");
+    const std::size_t at = title.find(fixed);
+    if (at != std::string::npos) title.replace(at, fixed.size(), "R=lambda B");
+    const std::string rs = " Rs=0";
+    const std::size_t rs_at = title.find(rs);
+    if (rs_at != std::string::npos)
+      title.replace(rs_at, rs.size(), fmt::format(" Rs={} R", options.static_ratio));
+    figure.title = fmt::format("sweep: {}, measured over the last of {} periods{}{}", title,
+                               options.periods, line_name.empty() ? "" : "; ",
+                               line_name + (marked ? " (dashed)" : ""));
+  }
   figure.panels = {stuck_panel, stops_panel};
   return figure;
 }
 
 void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
+  refuse_fixed_options(typed);
+  // The model options first: the same rules and messages as every command.
+  const Model model = typed.model.model();
   const double from = finite_lambda({"--lambda-from", typed.lambda_from});
   const double to = finite_lambda({"--lambda-to", typed.lambda_to});
   if (!(to >= from))
@@ -193,19 +328,31 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
   if (!typed.threads.empty())
     options.threads =
         static_cast<unsigned>(whole_number({"--threads", typed.threads}, max_threads, "256"));
-  options.v0 = parse_number({"--v0", typed.v0});
-  if (!std::isfinite(options.v0))
-    throw bad_input(fmt::format("--v0 = {}: must be a finite number", typed.v0));
-  if (!(std::fabs(options.v0) <= max_speed))
-    throw bad_input(fmt::format("--v0 = {}: must satisfy |v0| <= 1e6 (in B/(m w))", typed.v0));
+  options.v0 = model.v0;
+  options.base = model;
+  options.base.v0 = 0;
+  options.static_ratio = parse_number({"--static-ratio", typed.static_ratio});
+  // NaN and inf get the library's finite rule below.
+  if (std::isfinite(options.static_ratio) && !(options.static_ratio <= max_static_ratio))
+    throw bad_input(fmt::format("--static-ratio = {}: must be <= 1e6", typed.static_ratio));
+
+  TypedInputs inputs = typed.model.typed_inputs();
+  inputs["lambda_from"] = {"--lambda-from", typed.lambda_from};
+  inputs["lambda_to"] = {"--lambda-to", typed.lambda_to};
+  inputs["lambda"] = {"--lambda-to", typed.lambda_to};
+  inputs["friction"] = {"--lambda-to", typed.lambda_to};  // R = lambda B beyond double
+  inputs["static_ratio"] = {"--static-ratio", typed.static_ratio};
+  inputs["static_friction"] = {"--static-ratio", typed.static_ratio};
+  inputs["points"] = {"--points", typed.points};
+  inputs["periods"] = {"--periods", typed.periods};
+  naming_options(inputs, [&] { options.validate(); });
+  // |v0| in the velocity unit B/(m w) of the forcing (the seed's 1e6).
+  const double speed_unit = model.amplitude / (model.mass * model.omega);
+  if (!(std::fabs(options.v0) <= max_speed * speed_unit))
+    throw bad_input(fmt::format("--v0 = {}: must satisfy |v0| <= 1e6 (in B/(m w))",
+                                inputs.at("v0").text));
   if (!typed.plot.empty()) require_figure_path(typed.plot, "--plot");
 
-  const TypedInputs inputs{{"lambda_from", {"--lambda-from", typed.lambda_from}},
-                           {"lambda_to", {"--lambda-to", typed.lambda_to}},
-                           {"lambda", {"--lambda-to", typed.lambda_to}},
-                           {"points", {"--points", typed.points}},
-                           {"periods", {"--periods", typed.periods}},
-                           {"v0", {"--v0", typed.v0}}};
   const std::vector<double> lambdas = naming_options(inputs, [&] {
     return sweep_grid(precise(typed.lambda_from, from), precise(typed.lambda_to, to), points);
   });
@@ -250,9 +397,9 @@ Command add_sweep_command(CLI::App& app) {
               "number of lambdas, evenly spaced from A to B; 1 to 10^7 (1 needs A = B)"))
       ->required()
       ->type_name("N");
-  numeric(command->add_option("--v0", options->v0,
-                              "initial velocity of every run [B/(m w)]; |v0| <= 1e6"))
-      ->type_name("V")
+  numeric(command->add_option("--static-ratio", options->static_ratio,
+                              "static friction Rs = S * R at every lambda [1]; 1 to 1e6"))
+      ->type_name("S")
       ->capture_default_str();
   numeric(command->add_option("--periods", options->periods,
                               "forcing periods simulated per lambda, the last one measured; "
@@ -266,25 +413,52 @@ Command add_sweep_command(CLI::App& app) {
   command
       ->add_option("--plot", options->plot,
                    "also draw stuck fraction and stops per period against lambda, lambda* "
-                   "dashed, into FILE (.svg or .png; needs gnuplot)")
+                   "(or Den Hartog's boundary) dashed, into FILE (.svg or .png; needs gnuplot)")
       ->type_name("FILE");
+  // Every model option but the friction (each row sets R = lambda B and
+  // Rs = S R) and the start time (every run starts at t = 0).
+  ModelOptions::Selection selection;
+  selection.friction = false;
+  selection.static_friction = false;
+  selection.t0 = false;
+  options->model.add_to(*command, /*friction_required=*/false, selection);
+  for (const char* name : {"--friction", "--lambda", "--static-friction", "--static-lambda", "--t0"})
+    options->refused.push_back({name, "", nullptr});
+  // Bound after the vector is complete: the strings stay where they are.
+  for (SweepCliOptions::Refused& refused : options->refused)
+    refused.option =
+        command->add_option(refused.name, refused.value)->group("")->expected(0, 1);
   command->footer(
-      "For each lambda, runs the exact engine with m = B = w = 1, R = lambda, x0 = t0 = 0 and\n"
-      "v0 from t = 0 to 2 pi P + pi/2 and measures the last period (from force maximum to force\n"
+      "For each lambda, runs the exact engine on the model with R = lambda B and Rs = S R\n"
+      "(S = --static-ratio), from x0, v0 at t = 0 to P T + pi/(2 w), T the forcing period\n"
+      "(2 pi / w with one harmonic), and measures the last period T (from force maximum to force\n"
       "maximum): the regime the simulation shows (stops: at rest for good; dead-bands: at rest\n"
-      "part of the period; continuous: never at rest), the regime from the threshold\n"
-      "lambda* = 2 / sqrt(4 + pi^2) = 0.5370293, the fraction of the period at rest, the\n"
+      "part of the period; continuous: never at rest), the fraction of the period at rest, the\n"
       "distance slid, the stops (v = 0 and rest) and the reversals (v = 0, no rest).\n"
-      "The two regimes agree except just above lambda*, within 2.7e-15 P, where the dead band\n"
-      "is shorter than the engine's time resolution (docs/cli.md).\n"
-      "Output: '# ...' metadata lines, then lambda,regime_simulated,regime_threshold,\n"
-      "stuck_fraction,slide_per_period [B/(m w^2)],stops_per_period,reversals_per_period.\n"
+      "regime_threshold is the regime a closed form gives, where one does:\n"
+      "  the seed's model (no spring, damper, offset, extra harmonic; S = 1; any m, B, w):\n"
+      "    by lambda* = 2 / sqrt(4 + pi^2) = 0.5370293; the two regimes agree except just above\n"
+      "    lambda*, within 2.7e-15 P, where the dead band is shorter than the engine's time\n"
+      "    resolution (docs/cli.md);\n"
+      "  a spring without damper, offset or extra harmonic (any S): 'continuous' where Den\n"
+      "    Hartog's non-stop solution exists and is stable (as classify), else n/a;\n"
+      "  any other model: n/a.\n"
+      "The model options are those of every command except --friction/--lambda, --static-friction/\n"
+      "--static-lambda (the sweep sets R and Rs) and --t0 (runs start at t = 0); B must be > 0.\n"
+      "Output: '# ...' metadata lines (the whole model), then lambda,regime_simulated,\n"
+      "regime_threshold,stuck_fraction,slide_per_period [length],stops_per_period,\n"
+      "reversals_per_period.\n"
       "A progress line is shown on a terminal (stderr) when the run takes over a second.\n"
       "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
       "Examples:\n"
       "  frictionref sweep --lambda-from 0 --lambda-to 1.2 --points 1201 -o sweep.csv --plot "
       "sweep.svg\n"
-      "  frictionref sweep --lambda-from 0.5 --lambda-to 0.6 --points 101 --periods 1000 --v0 1");
+      "  frictionref sweep --lambda-from 0.5 --lambda-to 0.6 --points 101 --periods 1000 --v0 1\n"
+      "  # a spring, w = 2 sqrt(k/m): Den Hartog's boundary against the simulation\n"
+      "  frictionref sweep --lambda-from 0 --lambda-to 1 --points 101 --stiffness 1 --omega 2\n"
+      "  # static friction 1.5 times the sliding friction, a damper and a second harmonic\n"
+      "  frictionref sweep --lambda-from 0 --lambda-to 1 --points 101 --static-ratio 1.5 "
+      "--stiffness 1 --damping 0.1 --harmonic 0.3,3");
   return {command, [options](const Invocation& invocation) {
             run_sweep(*options, invocation);
             return exit_success;

@@ -1,10 +1,17 @@
 // An independent, deliberately simple solution of the seed problem's model
-// (m = B = w = 1, x0 = 0, t0 = 0) in long double, used as the expected values
-// of the CLI tests: THEORY.md's closed forms, slip ends by scanning for a
-// sign change of v and bisecting, breakaways at asin(lambda) + 2 pi k and
-// pi + asin(lambda) + 2 pi k. Shares no code with the library.
+// (m = B = w = 1, x0 = 0, t0 = 0) in 50 decimal digits
+// (boost::multiprecision::cpp_bin_float_50), used as the expected values of
+// the CLI tests: theory.md's closed forms, slip ends by scanning for a sign
+// change of v and bisecting to the last of the 50 digits, breakaways at
+// asin(lambda) + 2 pi k and pi + asin(lambda) + 2 pi k. Shares no code with
+// the library. The results are handed out in long double (64-bit mantissa:
+// 2^-11 ulp of a double), so the tests can hold the binary's printed doubles
+// to a few ulps without the reference's own error counting.
 #pragma once
 
+#include <algorithm>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -20,6 +27,16 @@ struct RefState {
   std::string kind;
 };
 
+// |actual - expected| in units of the spacing of doubles at
+// max(scale, |expected|): ulp(max(1, |t|)) for a time with scale 1.
+inline long double ulps_off(double actual, long double expected, long double scale = 1) {
+  const long double at = std::max(scale, std::fabs(expected));
+  int exponent = 0;
+  std::frexp(at, &exponent);  // 2^(e-1) <= at < 2^e
+  const long double ulp = std::ldexp(1.0L, exponent - 53);
+  return std::fabs(static_cast<long double>(actual) - expected) / ulp;
+}
+
 class ReferenceMotion {
  public:
   ReferenceMotion(long double lambda, long double v0, long double t_end);
@@ -31,12 +48,18 @@ class ReferenceMotion {
   std::size_t count(const std::string& kind) const;
 
  private:
-  long double velocity(int sign, long double a, long double va, long double t) const;
-  long double position(int sign, long double a, long double xa, long double va,
-                       long double t) const;
+  using Real = boost::multiprecision::cpp_bin_float_50;
+  // A phase with its ends in 50 digits (phases_[i] is exact_[i] rounded).
+  struct ExactPhase {
+    int sign;
+    Real t_begin, x_begin, v_begin;
+  };
+  Real velocity(int sign, const Real& a, const Real& va, const Real& t) const;
+  Real position(int sign, const Real& a, const Real& xa, const Real& va, const Real& t) const;
 
-  long double lambda_;
+  Real lambda_;
   std::vector<RefPhase> phases_;
+  std::vector<ExactPhase> exact_;
 };
 
 }  // namespace frictionref::cli_test

@@ -221,6 +221,77 @@ TEST(Sweep, InterruptedRunLeavesNothing) {
   EXPECT_TRUE(dir.entries().empty()) << "left behind: " << dir.entries().front();
 }
 
+// ---- the general model -----------------------------------------------------------
+
+// A spring without damper, m = B = k = 1, w = 2 (beta = 2): Den Hartog's
+// non-stop solution holds below lambda = 4 / (3 sqrt 5) = 0.59628479399994
+// (theory.md 8.2, closed form in tests/steady_state_values.py): there the
+// closed form gives `continuous`, above it n/a, and the simulation shows
+// stops above it.
+TEST(SweepGeneral, SpringAgainstDenHartogsBoundary) {
+  const RunResult result =
+      run_frictionref({"sweep", "--lambda-from", "0.1", "--lambda-to", "0.9", "--points", "9",
+                       "--stiffness", "1", "--omega", "2"});
+  ASSERT_TRUE(succeeded(result));
+  const Csv csv = parse_csv(result.out);
+  EXPECT_EQ(csv.header, kHeader);
+  EXPECT_EQ(csv.meta("model"),
+            "mass=1 amplitude=1 omega=2 friction=lambda lambda=lambda stiffness=1 x0=0 v0=0 t0=0");
+  const auto sweep = key_values(csv.meta("sweep"));
+  EXPECT_EQ(sweep.at("threshold"), "den-hartog");
+  EXPECT_EQ(sweep.at("frequency_ratio"), "2");
+  EXPECT_NEAR(to_double(sweep.at("den_hartog_boundary")), 0.59628479399994392, 1e-11);
+  // The window is in user time: (2 pi P + pi/2) / w.
+  EXPECT_NEAR(to_double(sweep.at("measured_to")), static_cast<double>((2 * kPi * 100 + kPi / 2) / 2),
+              1e-12);
+  EXPECT_EQ(csv.meta("regimes").rfind("Den Hartog's closed form gives the regime", 0), 0u);
+  ASSERT_EQ(csv.rows.size(), 9u);
+  for (const std::vector<std::string>& row : csv.rows) {
+    SCOPED_TRACE(row[0]);
+    if (to_double(row[0]) < 0.59628479399994392) {
+      EXPECT_EQ(row[1], "continuous");
+      EXPECT_EQ(row[2], "continuous");
+      EXPECT_EQ(row[5], "0");
+      EXPECT_EQ(row[6], "2");
+    } else {
+      EXPECT_EQ(row[1], "dead-bands");
+      EXPECT_EQ(row[2], "n/a");
+      EXPECT_EQ(row[5], "2");
+    }
+  }
+}
+
+// k = 0, F0 = 0.5, static friction 1.2 R: every model option the sweep takes
+// is recorded, the threshold is n/a, and the regimes are what the forces
+// allow: R = 0.2 < F0 drifts forward for ever (no stop, no reversal; slide
+// over the window from x = 0.3 t^2 / 2 + t - sin t), 0.5 < R and
+// Rs = 1.2 R < B + F0 = 1.5 slides forward once per period, Rs >= 1.5
+// never moves.
+TEST(SweepGeneral, ConstantForceAndStaticFriction) {
+  const RunResult result = run_frictionref(
+      {"sweep", "--lambda-from", "0.2", "--lambda-to", "1.4", "--points", "3", "--force-offset",
+       "0.5", "--static-ratio", "1.2", "--mass", "1", "--harmonic", "0,3", "--periods", "30"});
+  ASSERT_TRUE(succeeded(result));
+  const Csv csv = parse_csv(result.out);
+  EXPECT_EQ(csv.meta("model"),
+            "mass=1 amplitude=1 omega=1 friction=lambda lambda=lambda "
+            "static_friction=1.2*friction force_offset=0.5 harmonic=0,3,0 x0=0 v0=0 t0=0");
+  EXPECT_EQ(key_values(csv.meta("sweep")).at("threshold"), "none");
+  EXPECT_EQ(csv.meta("regimes").rfind("no closed form gives the regime", 0), 0u);
+  ASSERT_EQ(csv.rows.size(), 3u);
+  for (const std::vector<std::string>& row : csv.rows) EXPECT_EQ(row[2], "n/a") << row[0];
+  EXPECT_EQ(csv.rows[0][1], "continuous");
+  EXPECT_EQ(csv.rows[0][5] + csv.rows[0][6], "00");
+  const long double end = 2 * kPi * 30 + kPi / 2, begin = end - 2 * kPi;
+  const auto x = [](long double t) { return 0.3L * t * t / 2 + t - std::sin(t); };
+  // Two positions of ~1.4e4 (ulp 1.8e-12), a few ulps each.
+  EXPECT_NEAR(to_double(csv.rows[0][4]), static_cast<double>(x(end) - x(begin)), 3e-11);
+  EXPECT_EQ(csv.rows[1][1], "dead-bands");  // lambda 0.8: Rs = 0.96 < 1.5
+  EXPECT_EQ(csv.rows[1][5], "1");
+  EXPECT_EQ(csv.rows[2][1], "stops");  // lambda 1.4: Rs = 1.68 >= 1.5
+  EXPECT_EQ(csv.rows[2][3], "1");
+}
+
 // ---- progress ----------------------------------------------------------------
 
 // Runs the binary on a pseudo-terminal (stdout and stderr both on it) and
@@ -358,7 +429,22 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"sweep", "--lambda-from", "0", "--lambda-to", "1", "-o", "out.csv"},
                  "--points",
                  "required"},
-        BadInput{sweep_args({"--lambda", "0.3"}), "--lambda", ""},
+        BadInput{sweep_args({"--lambda", "0.3"}), "--lambda = 0.3", "not a sweep option"},
+        BadInput{sweep_args({"--friction", "0.3"}), "--friction = 0.3", "sets R = lambda B"},
+        BadInput{sweep_args({"--static-lambda", "0.6"}), "--static-lambda = 0.6",
+                 "--static-ratio"},
+        BadInput{sweep_args({"--t0", "1"}), "--t0 = 1", "starts at t = 0"},
+        BadInput{sweep_args({"--static-ratio", "0.5"}), "--static-ratio = 0.5", "must be >= 1"},
+        BadInput{sweep_args({"--static-ratio", "nan"}), "--static-ratio = nan", "finite"},
+        BadInput{sweep_args({"--static-ratio", "1e7"}), "--static-ratio = 1e7", "<= 1e6"},
+        BadInput{sweep_args({"--stiffness", "-1"}), "--stiffness = -1", "must be >= 0"},
+        BadInput{sweep_args({"--damping", "inf"}), "--damping = inf", "finite"},
+        BadInput{sweep_args({"--mass", "0"}), "--mass = 0", "must be > 0"},
+        BadInput{sweep_args({"--amplitude", "0"}), "--amplitude = 0", "must be > 0"},
+        BadInput{sweep_args({"--harmonic", "1"}), "--harmonic = 1", "must be B,W or B,W,PHI"},
+        BadInput{sweep_args({"--harmonic", "1,0"}), "--harmonic = 1,0", "W must be > 0"},
+        BadInput{sweep_args({"--harmonic", "0.2,1.4142135623730951"}),
+                 "--harmonic = 0.2,1.4142135623730951", "no common period"},
         BadInput{{"sweep", "--lambda-from", "0", "--lambda-to", "1", "--points", "3", "-o",
                   "/proc/out.csv"},
                  "-o = /proc/out.csv",
@@ -370,7 +456,9 @@ TEST(Sweep, Help) {
   ASSERT_TRUE(succeeded(result));
   for (const char* part :
        {"--lambda-from", "--lambda-to", "--points", "--v0", "--periods", "--threads", "-o",
-        "--plot", "Exit codes", "Example", "frictionref sweep "}) {
+        "--plot", "--static-ratio", "--mass", "--stiffness", "--damping", "--force-offset",
+        "--harmonic", "--x0", "n/a", "Den Hartog", "Exit codes", "Example",
+        "frictionref sweep "}) {
     EXPECT_NE(result.out.find(part), std::string::npos) << part;
   }
   EXPECT_NE(run_frictionref({"--help"}).out.find("sweep"), std::string::npos);
