@@ -353,15 +353,13 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     // stretch; its end is taken as the stop, not the start (where the at-rest
     // rule has just said "slide").
     const Work root = bracket.at_lo.f > 0 ? root_in(bracket, cached_jet, third, f, df) : bracket.hi;
-    const auto q = at(root);
-    const auto bounded = law.point(root);  // with its rounding bounds
+    const auto q = law.point(root);  // with its rounding bounds: N at the stop and the touch's jet
     const Work eps = std::numeric_limits<Work>::epsilon();
-    const Work damping = 2 * o_.sigma() * bounded.v;
+    const Work damping = 2 * o_.sigma() * q.v;
     ForceAtStop at_stop;
-    const Work along = s * (bounded.d1 + damping);  // s n - r
+    const Work along = s * (q.d1 + damping);  // s n - r
     at_stop.n = s * (along + o_.r());
-    const Work slip_error = bounded.e_d1 + 2 * o_.sigma() * bounded.e_v +
-                            4 * eps * (fabs(bounded.d1) + fabs(damping));
+    const Work slip_error = q.e_d1 + 2 * o_.sigma() * q.e_v + 4 * eps * (fabs(q.d1) + fabs(damping));
     at_stop.e_n = slip_error + 4 * eps * o_.r();
     if (along + o_.r() >= 0) {  // N still along the slip: r - rs is exact (Rs near R)
       at_stop.excess = along + (o_.r() - o_.rs());
@@ -376,7 +374,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       // search goes on past the stretch where v is within a few rounding
       // errors of 0 (blind_after_rest; f'' > 0 at a touch).
       ++summary_->touches;
-      at_from = law.jet(law.point(root));  // with its rounding bounds
+      at_from = law.jet(q);
       blind = within_noise(root, blind_after_rest(at_from, root, q.y, res), at_from.e0, res);
       if (root > from + 64 * res) touches = 0;
       from = root > from ? root : Work(from + res);
