@@ -126,7 +126,9 @@ TEST_P(EventsSeedCase, MatchesTheReferenceSolution) {
     EXPECT_LE(ulps_off(to_double(row[4]), expected.x_end), 4) << row[4];
     EXPECT_LE(ulps_off(to_double(row[5]), expected.v_begin), 4) << row[5];
     EXPECT_LE(ulps_off(to_double(row[6]), expected.v_end), 4) << row[6];
-    if (expected.v_end == 0) EXPECT_EQ(row[6], "0");
+    if (expected.v_end == 0) {
+      EXPECT_EQ(row[6], "0");
+    }
     if (i > 0) {
       EXPECT_EQ(row[1], csv.rows[i - 1][2]);
       EXPECT_EQ(row[3], csv.rows[i - 1][4]);
