@@ -15,6 +15,7 @@
 
 #include "frictionref/classification.hpp"
 #include "frictionref/model.hpp"
+#include "frictionref/shard.hpp"
 #include "frictionref/types.hpp"
 
 namespace frictionref {
@@ -71,6 +72,9 @@ struct MapAxis {
 struct MapOptions {
   ClassifyOptions classify;  // max_periods: periods simulated per point at most
   unsigned threads = 0;      // 0: all cores
+  // Only this shard's contiguous block of the grid's points (in the order
+  // below); the default is the whole grid.
+  Shard shard;
 };
 
 struct MapPoint {
@@ -87,8 +91,10 @@ using MapProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 // Every point of x.values() x y.values(), x outer (rows of constant x), each
 // classified by simulation (closed forms are not used: a map shows what the
-// motion does). Validates the axes, options and the base model at every
-// corner of the grid first (InvalidInput).
+// motion does); with options.shard, only that shard's block of these points
+// (options.shard.range(x.points * y.points)), the same numbers as in the
+// whole map. Validates the axes, options (the shard: "shard") and the base
+// model at every corner of the whole grid first (InvalidInput).
 std::vector<MapPoint> parameter_map(const Model& base, const MapAxis& x, const MapAxis& y,
                                     const MapOptions& options, const MapProgress& progress = {});
 

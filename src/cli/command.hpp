@@ -47,8 +47,10 @@ Command add_reproduce_command(CLI::App& app);
 Command add_classify_command(CLI::App& app);
 Command add_stiff_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
+Command add_report_command(CLI::App& app);
 Command add_convergence_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_map_command(CLI::App& app);
+Command add_merge_command(CLI::App& app);
 
 }  // namespace frictionref::cli

@@ -22,7 +22,8 @@ namespace frictionref::cli {
 namespace {
 
 constexpr const char* usage =
-    "usage: frictionref {events|curve|classify|reproduce|stiff|compare|convergence|sweep} [options] "
+    "usage: frictionref {events|curve|classify|reproduce|stiff|compare|convergence|sweep|map|merge} "
+    "[options] "
     "(see frictionref --help)";
 
 // Scripts read stderr line by line: whatever the message, it is one line.
@@ -81,7 +82,8 @@ int run(int argc, char** argv) {
   const std::vector<Command> commands{
       add_events_command(app),  add_curve_command(app),   add_reproduce_command(app),
       add_classify_command(app), add_stiff_command(app),  add_compare_command(app),
-      add_convergence_command(app), add_sweep_command(app),     add_map_command(app)};
+      add_convergence_command(app), add_sweep_command(app),     add_map_command(app),
+      add_merge_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& help_or_version) {

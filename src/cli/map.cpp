@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "frictionref/version.hpp"
 #include "model_options.hpp"
 #include "progress_line.hpp"
+#include "shard_option.hpp"
 
 namespace frictionref::cli {
 namespace {
@@ -33,6 +35,7 @@ struct MapCliOptions {
   std::string x, y;
   std::string periods = "200";
   std::string threads;
+  std::string shard;
   OutputFileOption output;
   std::string plot;
 };
@@ -51,13 +54,15 @@ std::string spec_text(const MapAxis& axis) {
 }
 
 void write_table(std::FILE* out, const Model& base, const MapAxis& x, const MapAxis& y,
-                 const MapOptions& options, const std::vector<MapPoint>& points,
-                 const std::string& command) {
+                 const MapOptions& options, const std::optional<Shard>& shard,
+                 const std::vector<MapPoint>& points, const std::string& command) {
   write_metadata(out, base, command,
-                 {fmt::format("map: x={} y={} periods={} max_multiplicity={} tolerance={} "
-                              "method=simulation",
-                              spec_text(x), spec_text(y), options.classify.max_periods,
-                              options.classify.max_multiplicity, options.classify.tolerance)});
+                 shard_lines(fmt::format("map: x={} y={} periods={} max_multiplicity={} "
+                                         "tolerance={} method=simulation",
+                                         spec_text(x), spec_text(y), options.classify.max_periods,
+                                         options.classify.max_multiplicity,
+                                         options.classify.tolerance),
+                             shard, x.points * y.points));
   fmt::print(out,
              "{},{},regime,stops_per_period,reversals_per_period,multiplicity,stuck_fraction,"
              "transient_periods\n",
@@ -146,6 +151,8 @@ void run_map(const MapCliOptions& typed, const Invocation& invocation) {
   if (!typed.threads.empty())
     options.threads =
         static_cast<unsigned>(whole_number({"--threads", typed.threads}, max_threads, "256"));
+  std::optional<Shard> shard;
+  if (!typed.shard.empty()) options.shard = *(shard = parse_shard(typed.shard, typed.plot));
   if (!typed.plot.empty()) require_figure_path(typed.plot, "--plot");
 
   // An axis that cannot apply to this model (frequency-ratio without a
@@ -176,7 +183,7 @@ void run_map(const MapCliOptions& typed, const Invocation& invocation) {
       });
     });
   }
-  write_table(out.stream(), base, x, y, options, points, invocation.command_line);
+  write_table(out.stream(), base, x, y, options, shard, points, invocation.command_line);
   if (!typed.plot.empty()) write_figure(map_figure(base, x, y, options, points), typed.plot, "--plot");
   out.commit();
 }
@@ -203,6 +210,7 @@ Command add_map_command(CLI::App& app) {
   numeric(command->add_option("--threads", options->threads,
                               "worker threads; 1 to 256 (default: all cores)"))
       ->type_name("N");
+  add_shard_option(*command, options->shard, "points");
   options->output.add_to(*command);
   command
       ->add_option("--plot", options->plot,
@@ -223,10 +231,14 @@ Command add_map_command(CLI::App& app) {
       "Output: '# ...' metadata lines, then <x>,<y>,regime,stops_per_period,\n"
       "reversals_per_period,multiplicity,stuck_fraction,transient_periods (x outer).\n"
       "A progress line is shown on a terminal (stderr) when the run takes over a second.\n"
+      "--shard I/N computes only the I-th of N contiguous blocks of the points (x outer), with\n"
+      "a '# shard:' line; 'frictionref merge' joins the N files into the whole map's table.\n"
       "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
       "Examples:\n"
       "  frictionref map --x lambda:0:1.2:241 --y frequency-ratio:0.1:3:146 --stiffness 1 "
       "--periods 200 -o map.csv --plot map.png\n"
+      "  frictionref map --x lambda:0:1.2:241 --y frequency-ratio:0.1:3:146 --stiffness 1 "
+      "--shard 3/8 -o map-3.csv   (then: frictionref merge map-*.csv -o map.csv)\n"
       "  frictionref map --x lambda:0.1:0.9:41 --y damping-ratio:0:0.5:21 --stiffness 1 -o m.csv");
   return {command, [options](const Invocation& invocation) {
             run_map(*options, invocation);

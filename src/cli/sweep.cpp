@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
@@ -29,6 +30,8 @@
 #include "model_options.hpp"
 #include "model_title.hpp"
 #include "progress_line.hpp"
+#include "shard_option.hpp"
+#include "sweep_summary.hpp"
 
 namespace frictionref::cli {
 namespace {
@@ -51,6 +54,7 @@ struct SweepCliOptions {
   std::string static_ratio = "1";
   std::string periods = "100";
   std::string threads;  // empty: all cores
+  std::string shard;    // empty: the whole sweep
   OutputFileOption output;
   std::string plot;
   // Model options that the sweep sets itself: registered out of the help
@@ -140,14 +144,18 @@ std::string regime_text(const SweepPoint& p) {
   return p.regime_threshold ? std::string(to_string(*p.regime_threshold)) : std::string("n/a");
 }
 
-void write_table(std::FILE* out, const std::vector<SweepPoint>& points, const SweepOptions& options,
-                 const std::string& command) {
+// `grid` is the whole sweep's lambdas and `points` the computed ones (a
+// shard's block of them, or all).
+void write_table(std::FILE* out, const std::vector<double>& grid,
+                 const std::vector<SweepPoint>& points, const SweepOptions& options,
+                 const std::optional<Shard>& shard, const std::string& command) {
   const SweepWindow window = sweep_window(options.periods, options.base);
   const SweepThreshold rule = sweep_threshold_rule(options);
-  std::size_t differ = 0, known = 0;
+  RegimeCounts counts;
   for (const SweepPoint& p : points) {
-    differ += p.regimes_differ();
-    known += p.regime_threshold.has_value();
+    ++counts.rows;
+    counts.differ += p.regimes_differ();
+    counts.known += p.regime_threshold.has_value();
   }
   fmt::print(out, "# frictionref {}\n", version);
   fmt::print(out, "# model: {}\n", model_line(options));
@@ -162,28 +170,15 @@ void write_table(std::FILE* out, const std::vector<SweepPoint>& points, const Sw
   } else {
     threshold = "none";
   }
-  fmt::print(out,
-             "# sweep: lambda_from={} lambda_to={} points={} periods={} measured_from={} "
-             "measured_to={} threshold={}\n",
-             points.front().lambda, points.back().lambda, points.size(), options.periods,
-             window.begin, window.end, threshold);
-  if (rule == SweepThreshold::lambda_star) {
-    fmt::print(out,
-               "# regimes: simulated and threshold differ at {} of {} lambdas (expected only for "
-               "0 < lambda - lambda* <= {:.3g}, dead bands shorter than the engine's time "
-               "resolution)\n",
-               differ, points.size(), sweep_unresolved_distance(options.periods));
-  } else if (rule == SweepThreshold::den_hartog) {
-    fmt::print(out,
-               "# regimes: Den Hartog's closed form gives the regime (continuous: its non-stop "
-               "solution exists and is stable) at {} of {} lambdas, n/a at the others; simulated "
-               "and threshold differ at {} of the {}\n",
-               known, points.size(), differ, known);
-  } else {
-    fmt::print(out,
-               "# regimes: no closed form gives the regime of this model (regime_threshold is "
-               "n/a); regime_simulated is the simulation's alone\n");
-  }
+  const std::vector<std::string> lines = shard_lines(
+      fmt::format("sweep: lambda_from={} lambda_to={} points={} periods={} measured_from={} "
+                  "measured_to={} threshold={}",
+                  grid.front(), grid.back(), grid.size(), options.periods, window.begin,
+                  window.end, threshold),
+      shard, grid.size());
+  for (const std::string& line : lines) fmt::print(out, "# {}\n", line);
+  // Of this file's rows (a shard's: merge recomputes it for the whole sweep).
+  fmt::print(out, "# {}\n", regimes_line(rule, counts, options.periods));
   std::fputs(
       "lambda,regime_simulated,regime_threshold,stuck_fraction,slide_per_period,"
       "stops_per_period,reversals_per_period\n",
@@ -351,11 +346,17 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
   if (!(std::fabs(options.v0) <= max_speed * speed_unit))
     throw bad_input(fmt::format("--v0 = {}: must satisfy |v0| <= 1e6 (in B/(m w))",
                                 inputs.at("v0").text));
+  std::optional<Shard> shard;
+  if (!typed.shard.empty()) shard = parse_shard(typed.shard, typed.plot);
   if (!typed.plot.empty()) require_figure_path(typed.plot, "--plot");
 
-  const std::vector<double> lambdas = naming_options(inputs, [&] {
+  const std::vector<double> grid = naming_options(inputs, [&] {
     return sweep_grid(precise(typed.lambda_from, from), precise(typed.lambda_to, to), points);
   });
+  // A shard runs its block of the grid; each lambda's run does not depend on the others.
+  const Shard::Range block = shard ? shard->range(grid.size()) : Shard::Range{0, grid.size()};
+  const std::vector<double> lambdas(grid.begin() + static_cast<std::ptrdiff_t>(block.begin),
+                                    grid.begin() + static_cast<std::ptrdiff_t>(block.end));
 
   AtomicOutput out(typed.output.path(), "-o");  // a bad -o fails now, not after the run
   std::vector<SweepPoint> results;
@@ -371,7 +372,7 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
       throw internal_error(fmt::format("the engine stopped early ({}) at lambda = {}",
                                        to_string(p.termination), p.lambda));
   }
-  write_table(out.stream(), results, options, invocation.command_line);
+  write_table(out.stream(), grid, results, options, shard, invocation.command_line);
   if (!typed.plot.empty()) write_figure(sweep_figure(results, options), typed.plot, "--plot");
   out.commit();
 }
@@ -409,6 +410,7 @@ Command add_sweep_command(CLI::App& app) {
   numeric(command->add_option("--threads", options->threads,
                               "worker threads; 1 to 256 (default: all cores)"))
       ->type_name("N");
+  add_shard_option(*command, options->shard, "lambdas");
   options->output.add_to(*command);
   command
       ->add_option("--plot", options->plot,
@@ -448,6 +450,8 @@ Command add_sweep_command(CLI::App& app) {
       "Output: '# ...' metadata lines (the whole model), then lambda,regime_simulated,\n"
       "regime_threshold,stuck_fraction,slide_per_period [length],stops_per_period,\n"
       "reversals_per_period.\n"
+      "--shard I/N runs only the I-th of N contiguous blocks of the lambdas, with a '# shard:'\n"
+      "line; 'frictionref merge' joins the N files into the whole sweep's table.\n"
       "A progress line is shown on a terminal (stderr) when the run takes over a second.\n"
       "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
       "Examples:\n"

@@ -197,6 +197,7 @@ std::vector<MapPoint> parameter_map(const Model& base, const MapAxis& x, const M
     throw InvalidInput("y", std::string(to_string(y.parameter)),
                        "must differ from the x axis's parameter");
   options.classify.validate();
+  options.shard.validate();
   base.validate();
   const std::vector<double> xs = x.values(), ys = y.values();
   const auto model_at = [&](double xv, double yv) {
@@ -207,14 +208,16 @@ std::vector<MapPoint> parameter_map(const Model& base, const MapAxis& x, const M
 
   ClassifyOptions classify_options = options.classify;
   classify_options.closed_forms = false;
-  std::vector<MapPoint> points(xs.size() * ys.size());
+  const Shard::Range block = options.shard.range(xs.size() * ys.size());
+  std::vector<MapPoint> points(block.size());
   detail::parallel_for(
       points.size(), options.threads,
-      [&](std::size_t index) {
+      [&](std::size_t i) {
+        const std::size_t index = block.begin + i;  // in the whole grid
         const double xv = xs[index / ys.size()], yv = ys[index % ys.size()];
         const Model model = model_at(xv, yv);
         const Classification c = classify(model, classify_options);
-        MapPoint& p = points[index];
+        MapPoint& p = points[i];
         p.x = xv;
         p.y = yv;
         p.regime = c.regime;
