@@ -4,16 +4,14 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "atomic_output.hpp"
 #include "command.hpp"
+#include "compare_run.hpp"
 #include "csv_format.hpp"
 #include "figure.hpp"
 #include "frictionref/comparison.hpp"
@@ -28,89 +26,21 @@ namespace {
 
 struct CompareCliOptions {
   ModelOptions model;
-  std::string candidate;
-  std::string time_column;
-  std::string velocity_column;
-  std::string displacement_column;
-  // Tolerances as typed (numbers are parsed by parse_number, see model_options.hpp).
-  std::string stick_threshold = number(CompareOptions{}.stick_threshold);
-  std::string min_stick_duration = number(CompareOptions{}.min_stick_duration);
-  std::string velocity_tolerance = number(CompareOptions{}.velocity_max_tolerance);
-  std::string velocity_rms_tolerance = number(CompareOptions{}.velocity_rms_tolerance);
-  std::string stop_time_tolerance = number(CompareOptions{}.stop_time_tolerance);
-  std::string max_missed_stops = std::to_string(CompareOptions{}.max_missed_stops);
-  std::string max_extra_stops = std::to_string(CompareOptions{}.max_extra_stops);
-  std::string displacement_tolerance = number(CompareOptions{}.displacement_max_tolerance);
-  std::string regime_window = number(CompareOptions{}.regime_window);
+  CompareInputs inputs;
   bool json = false;
   std::string plot;
   CLI::Option* plot_option = nullptr;
   OutputFileOption output;
 };
 
-// Library parameter names whose InvalidInput value is already the text the
-// user typed (or "(default: ...)"): only the option name is swapped in.
-const std::map<std::string, std::string> renamed = {
-    {"file", "--candidate"},
-    {"time_column", "--time-column"},
-    {"velocity_column", "--velocity-column"},
-    {"displacement_column", "--displacement-column"},
-};
-
-CliError translate(const InvalidInput& error, const TypedInputs& inputs) {
-  const auto option = renamed.find(error.parameter());
-  if (option != renamed.end())
-    return bad_input(fmt::format("{} = {}: {}", option->second, error.value(), error.rule()));
-  return to_bad_input(error, inputs);
-}
-
-template <class F>
-decltype(auto) translating(const TypedInputs& inputs, F&& f) {
-  try {
-    return std::forward<F>(f)();
-  } catch (const InvalidInput& error) {
-    throw translate(error, inputs);
-  }
-}
-
-// A count as typed: digits only.
-std::uint64_t parse_count(const TypedNumber& typed) {
-  const std::string& s = typed.text;
-  const bool digits = !s.empty() && s.size() <= 18 &&
-                      std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-  if (!digits)
-    throw bad_input(fmt::format("{} = {}: must be a whole number >= 0", typed.option, s));
-  return std::strtoull(s.c_str(), nullptr, 10);
-}
-
-// At most about `limit` points: per bucket the first, lowest and highest, in
-// time order, so spikes survive.
+// compare_run's decimation as a titled series.
 Series decimated(std::string title, const std::vector<double>& t, const std::vector<double>& y,
                  std::size_t limit) {
+  Curve curve = cli::decimated(t, y, limit);
   Series series;
   series.title = std::move(title);
-  if (t.size() <= limit) {
-    series.x = t;
-    series.y = y;
-    return series;
-  }
-  const std::size_t buckets = limit / 3;
-  const std::size_t size = (t.size() + buckets - 1) / buckets;
-  for (std::size_t begin = 0; begin < t.size(); begin += size) {
-    const std::size_t end = std::min(t.size(), begin + size);
-    std::size_t lo = begin, hi = begin;
-    for (std::size_t i = begin; i < end; ++i) {
-      if (y[i] < y[lo]) lo = i;
-      if (y[i] > y[hi]) hi = i;
-    }
-    std::vector<std::size_t> rows{begin, lo, hi};
-    std::sort(rows.begin(), rows.end());
-    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    for (std::size_t i : rows) {
-      series.x.push_back(t[i]);
-      series.y.push_back(y[i]);
-    }
-  }
+  series.x = std::move(curve.x);
+  series.y = std::move(curve.y);
   return series;
 }
 
@@ -125,29 +55,15 @@ Figure comparison_figure(const ComparisonReport& report, const TimeHistory& hist
   exact.title = "exact";
   exact.role = Series::Role::reference;
   const std::vector<State> at_candidate = sample_at(model, history.t);
-  GridOptions grid;
-  grid.t_end = report.t_last;
-  grid.dt = (report.t_last - model.t0) / 4000;
-  grid.include_events = true;
-  try {
-    UniformSampler sampler(model, grid);
-    State state;
-    while (sampler.next(state)) {
-      if (state.t < report.t_first) continue;
-      exact.x.push_back(state.t);
-      exact.y.push_back(state.v);
-    }
-  } catch (const InvalidInput&) {
-    // A grid step below the resolution of t (a huge t0): the candidate's times.
-    exact.x = history.t;
-    exact.y.clear();
-    for (const State& state : at_candidate) exact.y.push_back(state.v);
+  {
+    Curve curve = exact_velocity_curve(report, history, at_candidate);
+    exact.x = std::move(curve.x);
+    exact.y = std::move(curve.y);
   }
   if (exact.x.size() > 2 * max_points) exact = decimated("exact", exact.x, exact.y, max_points);
   exact.role = Series::Role::reference;
 
-  std::vector<double> error(history.t.size());
-  for (std::size_t i = 0; i < error.size(); ++i) error[i] = history.v[i] - at_candidate[i].v;
+  const std::vector<double> error = velocity_error(history, at_candidate);
 
   Panel velocity;
   velocity.title = "velocity";
@@ -283,58 +199,19 @@ nlohmann::ordered_json report_json(const ComparisonReport& r) {
 }
 
 ExitCode run_compare(const CompareCliOptions& options, const Invocation& invocation) {
-  TypedInputs inputs = options.model.typed_inputs();
-  inputs["stick_threshold"] = {"--stick-threshold", options.stick_threshold};
-  inputs["min_stick_duration"] = {"--min-stick-duration", options.min_stick_duration};
-  inputs["velocity_max_tolerance"] = {"--velocity-tolerance", options.velocity_tolerance};
-  inputs["velocity_rms_tolerance"] = {"--velocity-rms-tolerance", options.velocity_rms_tolerance};
-  inputs["stop_time_tolerance"] = {"--stop-time-tolerance", options.stop_time_tolerance};
-  inputs["displacement_max_tolerance"] = {"--displacement-tolerance",
-                                          options.displacement_tolerance};
-  inputs["regime_window"] = {"--regime-window", options.regime_window};
-
   // Everything typed is checked before the file is read.
-  const Model model = options.model.model();
-  CompareOptions compare_options;
-  compare_options.stick_threshold = parse_number(inputs.at("stick_threshold"));
-  compare_options.min_stick_duration = parse_number(inputs.at("min_stick_duration"));
-  compare_options.velocity_max_tolerance = parse_number(inputs.at("velocity_max_tolerance"));
-  compare_options.velocity_rms_tolerance = parse_number(inputs.at("velocity_rms_tolerance"));
-  compare_options.stop_time_tolerance = parse_number(inputs.at("stop_time_tolerance"));
-  compare_options.displacement_max_tolerance =
-      parse_number(inputs.at("displacement_max_tolerance"));
-  compare_options.regime_window = parse_number(inputs.at("regime_window"));
-  compare_options.max_missed_stops = parse_count({"--max-missed-stops", options.max_missed_stops});
-  compare_options.max_extra_stops = parse_count({"--max-extra-stops", options.max_extra_stops});
-  translating(inputs, [&] { compare_options.validate(); });
-  if (!(model.amplitude > 0))
-    throw bad_input(
-        fmt::format("--amplitude = {}: must be > 0 to compare (velocities are judged "
-                    "relative to B/(m w))",
-                    inputs.at("amplitude").text));
-  TimeHistoryReadOptions read_options;
-  read_options.time_column = options.time_column;
-  read_options.velocity_column = options.velocity_column;
-  read_options.displacement_column = options.displacement_column;
-  translating(inputs, [&] { read_options.validate(); });
+  const PreparedComparison prepared = prepare_comparison(options.inputs, options.model);
   const bool plot = options.plot_option->count() > 0;
   if (plot) require_figure_path(options.plot, "--plot");
   AtomicOutput out(options.output.path(), "-o");
 
-  const TimeHistory history =
-      translating(inputs, [&] { return read_time_history(options.candidate, read_options); });
-  if (history.t.front() < model.t0)
-    throw bad_input(fmt::format(
-        "--candidate = {}: its first time {} is before --t0 = {}; the exact motion starts at t0 "
-        "(pass the candidate's start time as --t0)",
-        options.candidate, number(history.t.front()), inputs.at("t0").text));
-  const ComparisonReport report =
-      translating(inputs, [&] { return compare(model, history, compare_options); });
+  const std::string& candidate = options.inputs.candidate;
+  const TimeHistory history = read_candidate(prepared, candidate);
+  const ComparisonReport report = run_comparison(prepared, history, candidate);
 
   if (plot) {
-    const std::string name = options.candidate == "-"
-                                 ? "stdin"
-                                 : std::filesystem::path(options.candidate).filename().string();
+    const std::string name =
+        candidate == "-" ? "stdin" : std::filesystem::path(candidate).filename().string();
     write_figure(comparison_figure(report, history, name), options.plot, "--plot");
   }
   if (options.json) {
@@ -355,72 +232,7 @@ Command add_compare_command(CLI::App& app) {
   auto options = std::make_shared<CompareCliOptions>();
   CLI::App* command = app.add_subcommand(
       "compare", "Check another code's time history (t, v [, x]) against the exact solution");
-  command
-      ->add_option("--candidate", options->candidate,
-                   "the other code's time history: CSV or white-space columns, optional header, "
-                   "'#' comments; '-' reads stdin")
-      ->required()
-      ->type_name("FILE");
-  options->model.add_to(*command);
-
-  const char* columns = "Columns (a header name, case-insensitive, or a 1-based number)";
-  command
-      ->add_option("--time-column", options->time_column,
-                   "time column [default: the header's t or time, else column 1]")
-      ->type_name("C")
-      ->group(columns);
-  command
-      ->add_option("--velocity-column", options->velocity_column,
-                   "velocity column [default: the header's v, vel or velocity, else column 2]")
-      ->type_name("C")
-      ->group(columns);
-  command
-      ->add_option("--displacement-column", options->displacement_column,
-                   "displacement column; adds the displacement_max check [default: none]")
-      ->type_name("C")
-      ->group(columns);
-
-  const char* checks =
-      "Checks (relative to the model: velocities in B/(m w), displacements in B/(m w^2), times "
-      "in forcing periods 2 pi / w)";
-  const auto number_option = [&](const char* name, std::string& text, const char* help,
-                                 const char* type) {
-    numeric(command->add_option(name, text, help))
-        ->type_name(type)
-        ->group(checks)
-        ->capture_default_str();
-  };
-  number_option("--stick-threshold", options->stick_threshold,
-                "at rest while |v| < S B/(m w); also the creep limit inside exact sticks; > 0",
-                "S");
-  number_option("--min-stick-duration", options->min_stick_duration,
-                "a rest counts as a stick if it lasts D periods or more; >= 0", "D");
-  number_option("--velocity-tolerance", options->velocity_tolerance,
-                "velocity_max: max |v - v_exact| <= E B/(m w); >= 0", "E");
-  number_option("--velocity-rms-tolerance", options->velocity_rms_tolerance,
-                "velocity_rms: time-weighted RMS of v - v_exact <= E B/(m w); >= 0", "E");
-  number_option("--stop-time-tolerance", options->stop_time_tolerance,
-                "stop_times: start and end of every matched stick within E periods; also the "
-                "margin at each end of an exact stick for creep; >= 0",
-                "E");
-  command
-      ->add_option("--max-missed-stops", options->max_missed_stops,
-                   "missed_stops: exact sticks the candidate may lack")
-      ->type_name("N")
-      ->group(checks)
-      ->capture_default_str();
-  command
-      ->add_option("--max-extra-stops", options->max_extra_stops,
-                   "extra_stops: candidate sticks the exact motion may lack")
-      ->type_name("N")
-      ->group(checks)
-      ->capture_default_str();
-  number_option("--displacement-tolerance", options->displacement_tolerance,
-                "displacement_max (with --displacement-column): max |x - x_exact| <= E "
-                "B/(m w^2); >= 0",
-                "E");
-  number_option("--regime-window", options->regime_window,
-                "regime: read from the last P periods of the record; > 0", "P");
+  options->inputs.add_to(*command, options->model);
 
   command->add_flag("--json", options->json, "print one JSON object instead of the text report");
   options->plot_option =

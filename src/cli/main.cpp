@@ -22,9 +22,9 @@ namespace frictionref::cli {
 namespace {
 
 constexpr const char* usage =
-    "usage: frictionref {events|curve|classify|reproduce|stiff|compare|convergence|sweep|map|merge} "
-    "[options] "
-    "(see frictionref --help)";
+    "usage: frictionref "
+    "{events|curve|classify|reproduce|stiff|compare|report|convergence|sweep|map|merge} "
+    "[options] (see frictionref --help)";
 
 // Scripts read stderr line by line: whatever the message, it is one line.
 int report(ExitCode code, std::string message) {
@@ -66,7 +66,7 @@ int run(int argc, char** argv) {
       "--friction R or --lambda L (R = L * B) is required.\n"
       "Output goes to stdout, or with -o FILE atomically to FILE; numbers are printed in the\n"
       "shortest form that reads back to the same double.\n"
-      "Exit codes: 0 success; 1 compare: verdict FAIL; 2 bad input or unwritable output\n"
+      "Exit codes: 0 success; 1 compare, report: verdict FAIL; 2 bad input or unwritable output\n"
       "(one line on stderr naming the option, no output file); 3 internal error (please report).\n"
       "Examples:\n"
       "  frictionref classify --lambda 0.7\n"
@@ -75,6 +75,7 @@ int run(int argc, char** argv) {
       "  frictionref reproduce --out results\n"
       "  frictionref stiff --lambda 0.7 --t-end 30 --kf 1e7 -o stiff.csv\n"
       "  frictionref compare --lambda 0.7 --candidate stiff.csv --plot compare.svg\n"
+      "  frictionref report --lambda 0.7 --candidate stiff.csv -o report.html\n"
       "  frictionref convergence --lambda 0.7 --format markdown\n"
       "  frictionref sweep --lambda-from 0 --lambda-to 1.2 --points 1201 --plot sweep.svg\n"
       "'frictionref <command> --help' explains each command; docs/cli.md has the formats.");
@@ -82,6 +83,7 @@ int run(int argc, char** argv) {
   const std::vector<Command> commands{
       add_events_command(app),  add_curve_command(app),   add_reproduce_command(app),
       add_classify_command(app), add_stiff_command(app),  add_compare_command(app),
+      add_report_command(app),
       add_convergence_command(app), add_sweep_command(app),     add_map_command(app),
       add_merge_command(app)};
   try {
