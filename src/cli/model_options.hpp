@@ -11,6 +11,7 @@
 #include "cli_error.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/model.hpp"
+#include "frictionref/model_input.hpp"
 
 namespace CLI {
 class App;
@@ -19,21 +20,16 @@ class Option;
 
 namespace frictionref::cli {
 
-// A number exactly as typed on the command line, with the option that carried it.
-struct TypedNumber {
-  std::string option;  // "--mass"
-  std::string text;    // "-1"
-};
-
-// Library field name (InvalidInput::parameter(): "mass", "t_end", "dt", ...)
-// -> the option and text the user typed for it.
-using TypedInputs = std::map<std::string, TypedNumber>;
+// TypedNumber (a number as typed, with its option) and TypedInputs (library
+// field name -> what the user typed for it) are the library's
+// (frictionref/model_input.hpp), shared with the Python module.
 
 // The whole text as a double, correctly rounded (strtod). CLI11 converts via
 // strtold and then to double, and that double rounding breaks the round trip of
 // numbers we print ourselves (e.g. 1.678986648677672 comes back one ulp off),
 // so numeric options are bound as text and converted here.
-// Throws bad input "--mass = abc: must be a number".
+// Throws bad input "--mass = abc: must be a number" (the library's
+// number_from_text, as a CLI error).
 double parse_number(const TypedNumber& number);
 
 // Makes CLI11 check, while parsing, that the option's text is a number: a
@@ -76,8 +72,11 @@ class ModelOptions {
   void add_to(CLI::App& command, bool friction_required = true);
   void add_to(CLI::App& command, bool friction_required, const Selection& selection);
 
-  // The model, parsed and validated; throws bad input naming the option.
+  // The model, parsed and validated by the library's rules
+  // (ModelInput::model()); throws bad input naming the option.
   Model model() const;
+  // The options as typed, for the library.
+  ModelInput input() const;
   // The typed model options by library field name (friction -> --lambda if
   // given; harmonics[i].amplitude/omega/phase -> the i-th --harmonic).
   TypedInputs typed_inputs() const;
@@ -85,9 +84,6 @@ class ModelOptions {
  private:
   bool lambda_given() const;
   bool static_lambda_given() const;
-  // The i-th --harmonic "B,W[,PHI]" as numbers; bad input naming it otherwise.
-  Harmonic harmonic(std::size_t i) const;
-
   std::string mass_ = "1";
   std::string amplitude_ = "1";
   std::string omega_ = "1";

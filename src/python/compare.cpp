@@ -1,0 +1,247 @@
+// frictionref.compare(): another code's time history against the exact
+// solution, as a dict with the keys of the CLI's `compare --json`.
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <vector>
+
+#include "arguments.hpp"
+#include "errors.hpp"
+#include "frictionref/comparison.hpp"
+#include "frictionref/version.hpp"
+#include "model.hpp"
+#include "module.hpp"
+
+namespace frictionref::python {
+namespace {
+
+py::dict interval(double start, double end) {
+  py::dict d;
+  d["start"] = start;
+  d["end"] = end;
+  return d;
+}
+
+py::list intervals(const std::vector<StickInterval>& list) {
+  py::list out;
+  for (const StickInterval& s : list) out.append(interval(s.start, s.end));
+  return out;
+}
+
+// The CLI's report_json (src/cli/compare.cpp), key for key, plus the text report.
+py::dict report_dict(const ComparisonReport& r) {
+  py::dict out;
+  out["verdict"] = std::string(to_string(r.verdict));
+  out["failed_checks"] = r.failed_checks();
+  py::list checks;
+  for (const Check& check : r.checks) {
+    py::dict c;
+    c["name"] = std::string(check.name());
+    c["passed"] = check.passed;
+    c["value"] = check.value;
+    c["tolerance"] = check.tolerance;
+    c["message"] = check.message;
+    checks.append(c);
+  }
+  out["checks"] = checks;
+  py::dict candidate;
+  candidate["source"] = r.source;
+  candidate["rows"] = r.rows;
+  candidate["t_first"] = r.t_first;
+  candidate["t_last"] = r.t_last;
+  candidate["max_spacing"] = r.max_spacing;
+  candidate["has_displacement"] = r.has_displacement;
+  out["candidate"] = candidate;
+  const Model& m = r.model;
+  py::dict model;
+  model["mass"] = m.mass;
+  model["amplitude"] = m.amplitude;
+  model["omega"] = m.omega;
+  model["friction"] = m.friction;
+  model["lambda"] = m.lambda();
+  model["x0"] = m.x0;
+  model["v0"] = m.v0;
+  model["t0"] = m.t0;
+  out["model"] = model;
+  const CompareOptions& o = r.options;
+  py::dict options;
+  options["stick_threshold"] = o.stick_threshold;
+  options["min_stick_duration"] = o.min_stick_duration;
+  options["velocity_max_tolerance"] = o.velocity_max_tolerance;
+  options["velocity_rms_tolerance"] = o.velocity_rms_tolerance;
+  options["stop_time_tolerance"] = o.stop_time_tolerance;
+  options["max_missed_stops"] = o.max_missed_stops;
+  options["max_extra_stops"] = o.max_extra_stops;
+  options["displacement_max_tolerance"] = o.displacement_max_tolerance;
+  options["regime_window"] = o.regime_window;
+  out["options"] = options;
+  py::dict scales;
+  scales["velocity"] = r.velocity_scale;
+  scales["displacement"] = r.displacement_scale;
+  scales["period"] = r.period;
+  scales["stick_velocity"] = r.stick_velocity;
+  scales["min_stick_time"] = r.min_stick_time;
+  scales["stop_time_margin"] = r.stop_time_margin;
+  out["scales"] = scales;
+  py::dict velocity;
+  velocity["max"] = r.velocity_max_error;
+  velocity["max_relative"] = r.velocity_max_error / r.velocity_scale;
+  velocity["max_time"] = r.velocity_max_error_time;
+  velocity["rms"] = r.velocity_rms_error;
+  velocity["rms_relative"] = r.velocity_rms_error / r.velocity_scale;
+  out["velocity_error"] = velocity;
+  if (r.has_displacement) {
+    py::dict displacement;
+    displacement["max"] = r.displacement_max_error;
+    displacement["max_relative"] = r.displacement_max_error / r.displacement_scale;
+    displacement["max_time"] = r.displacement_max_error_time;
+    displacement["rms"] = r.displacement_rms_error;
+    displacement["rms_relative"] = r.displacement_rms_error / r.displacement_scale;
+    out["displacement_error"] = displacement;
+  } else {
+    out["displacement_error"] = py::none();
+  }
+  py::list matched;
+  for (const MatchedStick& s : r.matched) {
+    py::dict d;
+    d["number"] = s.number;
+    d["exact"] = interval(s.exact.start, s.exact.end);
+    d["candidate"] = interval(s.candidate.start, s.candidate.end);
+    d["start_error"] = s.start_error;
+    d["end_error"] = s.end_error;
+    d["exact_phase"] =
+        std::isnan(s.phase_start) ? py::object(py::none()) : interval(s.phase_start, s.phase_end);
+    matched.append(d);
+  }
+  py::dict sticks;
+  sticks["exact_phases"] = intervals(r.exact_phases);
+  sticks["exact"] = intervals(r.exact_sticks);
+  sticks["candidate"] = intervals(r.candidate_sticks);
+  sticks["matched"] = matched;
+  sticks["missed"] = intervals(r.missed);
+  sticks["extra"] = intervals(r.extra);
+  out["sticks"] = sticks;
+  py::dict creep;
+  creep["max_velocity"] = r.creep_max_velocity;
+  creep["max_relative"] = r.creep_max_velocity / r.velocity_scale;
+  creep["time"] = r.creep_time;
+  creep["samples"] = r.creep_samples;
+  out["creep"] = creep;
+  py::dict regime;
+  regime["candidate"] = std::string(to_string(r.candidate_regime));
+  regime["exact"] = std::string(to_string(r.exact_shown_regime));
+  regime["steady_state"] = std::string(to_string(r.exact_regime));
+  regime["window_start"] = r.regime_window_start;
+  regime["window_end"] = r.t_last;
+  regime["candidate_stops_per_period"] = r.candidate_stops_per_period;
+  regime["exact_stops_per_period"] = r.exact_stops_per_period;
+  out["regime"] = regime;
+  out["notes"] = r.notes;
+  out["version"] = version;
+  out["report"] = r.full_report();
+  return out;
+}
+
+std::uint64_t stop_count(py::handle object, const char* keyword, const char* option) {
+  const Number n = whole(object, keyword);
+  if (!(n.value >= 0) || n.value != std::floor(n.value) || !(n.value < 1e18))
+    value_error(std::string(option) + " = " + n.text + ": must be a whole number >= 0");
+  return static_cast<std::uint64_t>(n.value);
+}
+
+std::vector<double> column(py::handle object, const char* keyword) {
+  const py::array_t<double> array = float_array(object, keyword);
+  return std::vector<double>(array.data(), array.data() + array.size());
+}
+
+py::dict compare_history(const PyModel& model, py::handle t_object, py::handle v_object,
+                         py::handle x_object, py::handle stick_threshold,
+                         py::handle min_stick_duration, py::handle velocity_tolerance,
+                         py::handle velocity_rms_tolerance, py::handle stop_time_tolerance,
+                         py::handle max_missed_stops, py::handle max_extra_stops,
+                         py::handle displacement_tolerance, py::handle regime_window) {
+  TypedInputs inputs = model.input.typed_inputs();
+  CompareOptions options;
+  // (library field, keyword, CLI option, value)
+  const auto set = [&](const char* field, const char* keyword, const char* option,
+                       py::handle object, double& value) {
+    const Number n = number(object, keyword);
+    inputs[field] = {option, n.text};
+    value = n.value;
+  };
+  set("stick_threshold", "stick_threshold", "--stick-threshold", stick_threshold,
+      options.stick_threshold);
+  set("min_stick_duration", "min_stick_duration", "--min-stick-duration", min_stick_duration,
+      options.min_stick_duration);
+  set("velocity_max_tolerance", "velocity_tolerance", "--velocity-tolerance", velocity_tolerance,
+      options.velocity_max_tolerance);
+  set("velocity_rms_tolerance", "velocity_rms_tolerance", "--velocity-rms-tolerance",
+      velocity_rms_tolerance, options.velocity_rms_tolerance);
+  set("stop_time_tolerance", "stop_time_tolerance", "--stop-time-tolerance", stop_time_tolerance,
+      options.stop_time_tolerance);
+  set("displacement_max_tolerance", "displacement_tolerance", "--displacement-tolerance",
+      displacement_tolerance, options.displacement_max_tolerance);
+  set("regime_window", "regime_window", "--regime-window", regime_window, options.regime_window);
+  options.max_missed_stops = stop_count(max_missed_stops, "max_missed_stops", "--max-missed-stops");
+  options.max_extra_stops = stop_count(max_extra_stops, "max_extra_stops", "--max-extra-stops");
+  naming(inputs, [&] { options.validate(); });
+  if (!(model.model.amplitude > 0))
+    value_error("--amplitude = " + inputs.at("amplitude").text +
+                ": must be > 0 to compare (velocities are judged relative to B/(m w))");
+
+  TimeHistory history;
+  history.t = column(t_object, "t");
+  history.v = column(v_object, "v");
+  if (!x_object.is_none()) history.x = column(x_object, "x");
+  history.source = "arrays t, v" + std::string(history.x ? ", x" : "") + " (" +
+                   std::to_string(history.t.size()) + " rows)";
+  naming(inputs, [&] { history.validate(); });
+  if (history.t.front() < model.model.t0)
+    value_error("t[0] = " + number_text(history.t.front()) + ": is before --t0 = " +
+                inputs.at("t0").text +
+                "; the exact motion starts at t0 (pass the candidate's start time as t0)");
+  const ComparisonReport report = naming(inputs, [&] {
+    py::gil_scoped_release release;
+    return compare(model.model, history, options);
+  });
+  return report_dict(report);
+}
+
+}  // namespace
+
+void bind_compare(py::module_& m) {
+  const CompareOptions defaults;
+  m.def("compare", &compare_history, py::arg("model"), py::arg("t"), py::arg("v"),
+        py::arg("x") = py::none(), py::kw_only(),
+        py::arg("stick_threshold") = defaults.stick_threshold,
+        py::arg("min_stick_duration") = defaults.min_stick_duration,
+        py::arg("velocity_tolerance") = defaults.velocity_max_tolerance,
+        py::arg("velocity_rms_tolerance") = defaults.velocity_rms_tolerance,
+        py::arg("stop_time_tolerance") = defaults.stop_time_tolerance,
+        py::arg("max_missed_stops") = defaults.max_missed_stops,
+        py::arg("max_extra_stops") = defaults.max_extra_stops,
+        py::arg("displacement_tolerance") = defaults.displacement_max_tolerance,
+        py::arg("regime_window") = defaults.regime_window,
+        R"doc(Checks another code's time history (times t, velocities v, optionally
+positions x; 1-D arrays of equal length, t non-decreasing, from model.t0 on)
+against the exact solution at those very times (the CLI's `compare`;
+docs/cross-checking.md). Needs amplitude B > 0.
+
+Returns the report as a dict with the keys of `compare --json`: verdict
+('PASS' or 'FAIL'), failed_checks, checks (name, passed, value, tolerance,
+message), candidate, model, options, scales, velocity_error,
+displacement_error (None without x), sticks, creep, regime, notes, version,
+and report (the CLI's text report). Tolerances as the CLI's options, in
+B/(m w) for velocities, B/(m w^2) for positions and forcing periods for
+times: stick_threshold, min_stick_duration, velocity_tolerance,
+velocity_rms_tolerance, stop_time_tolerance, max_missed_stops,
+max_extra_stops, displacement_tolerance, regime_window.
+
+    >>> model = frictionref.Model(lambda_=0.7)
+    >>> s = frictionref.stiff(model, 30)
+    >>> frictionref.compare(model, s['t'], s['v'])['verdict']
+    'PASS'
+)doc");
+}
+
+}  // namespace frictionref::python

@@ -1,0 +1,37 @@
+"""stiff(): the central-difference penalty model, against the exact motion
+where the scheme's error is known, and the CLI (consistency)."""
+import numpy as np
+
+import frictionref
+from closed_forms import dead_band_state
+from conftest import read_csv
+
+
+def test_without_friction_it_is_central_differences_of_x_pp_equal_sin_t():
+    # R = 0: the slider follows the mass (f = 0, z = x); from rest the exact
+    # motion is x = t - sin t, v = 1 - cos t, and central differences are
+    # second order: |error| ~ dt^2 / 6 on these unit-size terms.
+    s = frictionref.stiff(frictionref.Model(friction=0), 10, kf=1e4, dt=1e-3, output_dt=0.01)
+    assert list(s.dtype.names) == ["t", "x", "v", "f", "z"]
+    assert np.all(s["f"] == 0) and np.array_equal(s["z"], s["x"])
+    assert np.max(np.abs(s["x"] - (s["t"] - np.sin(s["t"])))) < 1e-5
+    assert np.max(np.abs(s["v"] - (1 - np.cos(s["t"])))) < 1e-5
+
+
+def test_friction_bound_and_convergence_to_the_exact_motion():
+    s = frictionref.stiff(frictionref.Model(lambda_=0.7), 30)
+    assert len(s) == 3001
+    assert np.all(np.abs(s["f"]) <= 0.7)
+    # docs/validation.md: with K_f = 1e7 the velocity is within 2.2e-4 of the exact one.
+    exact = np.array([float(dead_band_state(0.7, t)[1]) for t in s["t"][::10]])
+    assert np.max(np.abs(s["v"][::10] - exact)) < 1e-3
+
+
+def test_consistency_with_the_cli_stiff(cli):
+    code, out, _ = cli("stiff", "--lambda", "0.7", "--t-end", "5", "--kf", "1e5", "--dt", "1e-4")
+    assert code == 0
+    rows = read_csv(out)
+    s = frictionref.stiff(frictionref.Model(lambda_=0.7), 5, kf=1e5, dt=1e-4)
+    assert len(rows) == len(s)
+    for row, got in zip(rows, s):
+        assert [float(row[k]) for k in "txv"] == [got[k] for k in "txv"]
