@@ -119,6 +119,34 @@ TEST(ExactEngine, RejectsMotionBelowTheRangeOfDouble) {
   EXPECT_NO_THROW(ExactEngine(small, 10.0));
 }
 
+// A spring so weak that the static deflection of the largest force is beyond
+// 1e300 (fuzz finding, corpus general-finding-weak-spring-deflection-overflow:
+// F0 / k = 3e470 made the slip's closed form non-finite) is refused; a weak
+// spring with a representable deflection runs.
+TEST(ExactEngine, RejectsASpringWhoseStaticDeflectionLeavesTheRange) {
+  Model weak;
+  weak.mass = 232704;
+  weak.amplitude = 1000;
+  weak.friction = 0;
+  weak.static_friction = 31420.39;
+  weak.stiffness = 5.432334175734625e-312;
+  weak.damping = 2346;
+  weak.force_offset = 1.7573814970894711e+159;
+  weak.x0 = 262144;
+  weak.v0 = 65280;
+  weak.t0 = -204.8;
+  try {
+    ExactEngine engine(weak, -109.51675145368303);
+    ADD_FAILURE() << "accepted F0 / k = 3e470";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "stiffness");
+    EXPECT_NE(e.rule().find("static deflection"), std::string::npos) << e.rule();
+  }
+  Model fine = seed_model(0.3);
+  fine.stiffness = 1e-290;  // B / k = 1e290 < 1e300
+  EXPECT_EQ(solve(fine, 30.0).summary.termination, Termination::reached_end);
+}
+
 // Time scales the resolution (8 ulps of max(1, |w t|) / w) cannot resolve:
 // a natural frequency, a damping rate or a harmonic 1e10 times the span.
 TEST(ExactEngine, RejectsTimeScalesBelowTheResolution) {

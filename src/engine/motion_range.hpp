@@ -91,6 +91,32 @@ void check_motion_scales(const BasicModel<Real>& model) {
                          "precision (docs/theory.md 4.12)");
 }
 
+// Throws InvalidInput if a spring is so weak that the static deflection P/k
+// of the largest force P (|F0|, R, Rs, B, |B_i|) is beyond largest_motion:
+// the closed forms hold the motion as that deflection plus transients, so
+// they would overflow (or cancel to nothing) although the motion itself may
+// be small (found by the fuzzer: k = 5e-312 with F0 = 2e159).
+template <class Real, class Work>
+void check_static_deflection(const BasicModel<Real>& model) {
+  using std::fabs;
+  if (!(model.stiffness > 0)) return;
+  Work force = fabs(Work(model.force_offset));
+  const auto consider = [&force](const Work& p) {
+    if (p > force) force = p;
+  };
+  consider(Work(model.friction));
+  consider(Work(model.static_limit()));
+  consider(fabs(Work(model.amplitude)));
+  for (const auto& h : model.harmonics) consider(fabs(Work(h.amplitude)));
+  const Work deflection = force / Work(model.stiffness);
+  if (deflection < Work(MotionLimits::largest_motion)) return;
+  throw InvalidInput("stiffness", to_text(model.stiffness),
+                     "with forces up to " + to_text(Real(force)) +
+                         " the spring's static deflection (largest force)/k is beyond 1e300, "
+                         "outside the range the closed forms can hold (a spring this weak: "
+                         "give stiffness 0; docs/theory.md 4.12)");
+}
+
 // Throws InvalidInput if a time scale of the model other than the forcing's
 // is too short for the engine's time resolution, 8 ulps of max(1, |w t|) in
 // the forcing's phase, i.e. 8 eps max(1/w, |t|) in time: a harmonic's w_i,

@@ -52,6 +52,7 @@ class LinearOscillatorFamily {
                           m;
     check_motion_bounds(model, t_end, bounds, f_max / (m * Work(model.omega)), "F_max/(m w)");
     check_motion_scales<Real, Work>(model);
+    check_static_deflection<Real, Work>(model);
     check_time_scales<Real, Work>(model, t_end);
     (void)tau0;
   }
