@@ -431,9 +431,7 @@ TimeHistory parse_time_history(std::istream& in, const std::string& name,
   return Reader(in, name, options).read();
 }
 
-TimeHistory read_time_history(const std::string& path, const TimeHistoryReadOptions& options) {
-  options.validate();
-  if (path == "-") return parse_time_history(std::cin, "standard input", options);
+std::ifstream open_time_history_file(const std::string& path) {
   if (path.empty()) throw InvalidInput("file", "''", "must be a file name");
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
@@ -446,6 +444,13 @@ TimeHistory read_time_history(const std::string& path, const TimeHistoryReadOpti
         "file", path,
         std::string("cannot be opened: ") + (code ? std::strerror(code) : "unknown error"));
   }
+  return in;
+}
+
+TimeHistory read_time_history(const std::string& path, const TimeHistoryReadOptions& options) {
+  options.validate();
+  if (path == "-") return parse_time_history(std::cin, "standard input", options);
+  std::ifstream in = open_time_history_file(path);
   return parse_time_history(in, path, options);
 }
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <fstream>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -54,6 +55,12 @@ struct TimeHistoryReadOptions {
 // value; "time_column" / "velocity_column" / "displacement_column" for a
 // column that does not exist.
 TimeHistory read_time_history(const std::string& path, const TimeHistoryReadOptions& options = {});
+
+// Opens the file `path` for read_time_history (and for readers that keep the
+// bytes, as `report` does): throws InvalidInput, parameter "file", for an
+// empty name, a directory, or a file the system will not open (its reason).
+// "-" is not handled here: the caller reads standard input.
+std::ifstream open_time_history_file(const std::string& path);
 
 // The same from a stream; `name` stands for the file in messages and in
 // TimeHistory::source.

@@ -1,15 +1,13 @@
 // Reading the candidate as bytes (candidate_file.hpp).
 #include "candidate_file.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
 #include <sstream>
 
 #include "frictionref/error.hpp"
+#include "frictionref/time_history.hpp"
 
 namespace frictionref::cli {
 namespace {
@@ -31,18 +29,7 @@ CandidateFile read_candidate_file(const std::string& path) {
     return file;
   }
   file.name = path;
-  if (path.empty()) throw InvalidInput("file", "''", "must be a file name");
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error))
-    throw InvalidInput("file", path, "is a directory, not a file");
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int code = errno;
-    throw InvalidInput(
-        "file", path,
-        std::string("cannot be opened: ") + (code ? std::strerror(code) : "unknown error"));
-  }
+  std::ifstream in = open_time_history_file(path);
   file.bytes = read_all(in, path);
   return file;
 }
