@@ -9,11 +9,12 @@
 #include <limits>
 #include <stdexcept>
 
+#include "frictionref/classification.hpp"
+#include "frictionref/detail/number_text.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
+#include "frictionref/model_fields.hpp"
 #include "frictionref/sampling.hpp"
-#include "frictionref/steady_state.hpp"
-#include "frictionref/detail/number_text.hpp"
 
 namespace frictionref {
 namespace {
@@ -21,6 +22,13 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string text(double value) { return detail::shortest_text(value); }
+
+// "dead-bands", or "dead-bands (by simulation)" when no closed form gave it.
+std::string steady_text(Regime regime, ClassificationMethod method) {
+  std::string s(to_string(regime));
+  if (method == ClassificationMethod::simulation) s += " (by simulation)";
+  return s;
+}
 
 // Six significant digits (values in reports).
 std::string g(double value) {
@@ -346,7 +354,11 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
   const double record = r.t_last - r.t_first;
   const double window = std::min(options.regime_window * r.period, record);
   r.regime_window_start = r.t_last - window;
-  r.exact_regime = steady_state(model).regime;
+  // Every model's steady state: a closed form where one applies, else the
+  // exact engine period after period (classification.hpp).
+  const Classification steady = classify(model);
+  r.exact_regime = steady.regime;
+  r.exact_regime_method = steady.method;
   const Shown exact_shown = shown_regime(history.t, v_exact, r.exact_sticks, r.regime_window_start,
                                          r.stick_velocity, window / r.period);
   const Shown candidate_shown =
@@ -469,7 +481,7 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
         "over t = " + g(r.regime_window_start) + " .. " + g(r.t_last) + " the candidate shows " +
             shown(r.candidate_regime, r.candidate_stops_per_period) + ", the exact motion " +
             shown(r.exact_shown_regime, r.exact_stops_per_period) + "; steady state " +
-            std::string(to_string(r.exact_regime)));
+            steady_text(r.exact_regime, r.exact_regime_method));
   }
   r.verdict = std::all_of(r.checks.begin(), r.checks.end(), [](const Check& c) { return c.passed; })
                   ? Verdict::pass
@@ -487,7 +499,7 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
   if (r.exact_shown_regime != r.exact_regime)
     r.notes.push_back("over the regime window the exact motion shows " +
                       std::string(to_string(r.exact_shown_regime)) + " while its steady state is " +
-                      std::string(to_string(r.exact_regime)) +
+                      steady_text(r.exact_regime, r.exact_regime_method) +
                       " (a transient that has not died out, or |v| lingering under the stick "
                       "threshold without a stop); the candidate is held to what the exact motion "
                       "shows");
@@ -520,10 +532,7 @@ std::string ComparisonReport::full_report() const {
   const CompareOptions& o = options;
   std::string out;
   out += "candidate: " + source + "\n";
-  out += "model: mass=" + text(model.mass) + " amplitude=" + text(model.amplitude) +
-         " omega=" + text(model.omega) + " friction=" + text(model.friction) +
-         " lambda=" + text(model.lambda()) + " x0=" + text(model.x0) + " v0=" + text(model.v0) +
-         " t0=" + text(model.t0) + "\n";
+  out += "model: " + model_fields(model) + "\n";
   out += "record: " + std::to_string(rows) + " rows, t = " + g(t_first) + " .. " + g(t_last) +
          " (" + g((t_last - t_first) / period) + " periods), largest spacing " + g(max_spacing) +
          "\n";
@@ -575,7 +584,8 @@ std::string ComparisonReport::full_report() const {
   if (!extra.empty()) out += "  extra: " + interval_list(extra, 20) + "\n";
   out += "regime: candidate " + std::string(to_string(candidate_regime)) + ", exact " +
          std::string(to_string(exact_shown_regime)) + " over t = " + g(regime_window_start) +
-         " .. " + g(t_last) + "; steady state " + std::string(to_string(exact_regime)) + "\n";
+         " .. " + g(t_last) + "; steady state " + steady_text(exact_regime, exact_regime_method) +
+         "\n";
   for (const std::string& note : notes) out += "note: " + note + "\n";
   return out + brief_report();
 }

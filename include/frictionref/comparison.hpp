@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "frictionref/classification.hpp"
 #include "frictionref/model.hpp"
 #include "frictionref/time_history.hpp"
 #include "frictionref/types.hpp"
@@ -154,8 +155,9 @@ struct ComparisonReport {
   std::size_t creep_samples = 0;      // candidate samples inside those intervals
 
   // Regime over [regime_window_start, t_last].
-  double regime_window_start = 0;             // [time]
-  Regime exact_regime = Regime::stops;        // steady_state(): the regime for lambda
+  double regime_window_start = 0;       // [time]
+  Regime exact_regime = Regime::stops;  // classify(model).regime: the steady state
+  ClassificationMethod exact_regime_method = ClassificationMethod::closed_form;  // how it was found
   Regime exact_shown_regime = Regime::stops;  // what the exact motion shows in the window
   Regime candidate_regime = Regime::stops;    // what the candidate shows in the window:
                                               // stops if at rest throughout, dead-bands if

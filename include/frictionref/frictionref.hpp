@@ -7,6 +7,7 @@
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
+#include "frictionref/model_fields.hpp"
 #include "frictionref/parameter_map.hpp"
 #include "frictionref/phase.hpp"
 #include "frictionref/sampling.hpp"

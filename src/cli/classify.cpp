@@ -63,7 +63,7 @@ void run_classify(const ClassifyCommandOptions& options, const Invocation&) {
   } else {
     for (const auto& [key, value] : json.items()) {
       if (key == "model") {
-        fmt::print(out.stream(), "model: {}\n", model_fields(model));
+        fmt::print(out.stream(), "model: {}\n", model_fields(model, number));
       } else if (key == "den_hartog" && value.is_object()) {
         for (const auto& [name, field] : value.items())
           fmt::print(out.stream(), "den_hartog.{}: {}\n", name, text_value(field));

@@ -189,6 +189,7 @@ nlohmann::ordered_json report_json(const ComparisonReport& r) {
   out["regime"] = {{"candidate", std::string(to_string(r.candidate_regime))},
                    {"exact", std::string(to_string(r.exact_shown_regime))},
                    {"steady_state", std::string(to_string(r.exact_regime))},
+                   {"steady_state_method", std::string(to_string(r.exact_regime_method))},
                    {"window_start", r.regime_window_start},
                    {"window_end", r.t_last},
                    {"candidate_stops_per_period", r.candidate_stops_per_period},

@@ -9,21 +9,6 @@ namespace frictionref::cli {
 
 std::string number(double value) { return fmt::format("{}", value); }
 
-std::string model_fields(const Model& model) {
-  std::string fields = fmt::format("mass={} amplitude={} omega={} friction={} lambda={}",
-                                   model.mass, model.amplitude, model.omega, model.friction,
-                                   model.lambda());
-  // The general model's fields where they differ from their defaults (the
-  // seed's model keeps the line it always had).
-  if (model.static_friction) fields += fmt::format(" static_friction={}", *model.static_friction);
-  if (model.stiffness != 0) fields += fmt::format(" stiffness={}", model.stiffness);
-  if (model.damping != 0) fields += fmt::format(" damping={}", model.damping);
-  if (model.force_offset != 0) fields += fmt::format(" force_offset={}", model.force_offset);
-  for (const Harmonic& h : model.harmonics)
-    fields += fmt::format(" harmonic={},{},{}", h.amplitude, h.omega, h.phase);
-  return fields + fmt::format(" x0={} v0={} t0={}", model.x0, model.v0, model.t0);
-}
-
 namespace {
 
 bool needs_quotes(const std::string& word) {
@@ -65,8 +50,8 @@ std::string command_line(int argc, const char* const* argv) {
 
 void write_metadata(std::FILE* out, const Model& model, const std::string& command,
                     const std::vector<std::string>& extra_lines) {
-  fmt::print(out, "# frictionref {}\n# model: {}\n# command: {}\n", version, model_fields(model),
-             command);
+  fmt::print(out, "# frictionref {}\n# model: {}\n# command: {}\n", version,
+             model_fields(model, number), command);
   for (const std::string& line : extra_lines) fmt::print(out, "# {}\n", line);
 }
 

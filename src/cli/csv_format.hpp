@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "frictionref/model.hpp"
+#include "frictionref/model_fields.hpp"
 #include "frictionref/phase.hpp"
 
 namespace frictionref::cli {
@@ -15,10 +16,6 @@ namespace frictionref::cli {
 // Shortest round-trip form: 0.3, 1, 1e-05, -0, inf, nan.
 std::string number(double value);
 
-// "mass=1 amplitude=1 omega=1 friction=0.3 lambda=0.3 x0=0 v0=0 t0=0", with
-// static_friction=, stiffness=, damping=, force_offset= and one harmonic=B,W,PHI
-// per extra harmonic before x0 where the model has them.
-std::string model_fields(const Model& model);
 
 // The command line as one shell-quoted line, for "# command:" (re-runnable):
 // "frictionref <args>", argv[0] replaced by the program's name.

@@ -116,7 +116,7 @@ Figure map_figure(const Model& base, const MapAxis& x, const MapAxis& y,
     panel.series.push_back(boundary);
   }
   Figure figure;
-  figure.title = "map: " + model_fields(base);
+  figure.title = "map: " + model_fields(base, number);
   figure.panels = {panel};
   figure.panel_height = 640;
   return figure;

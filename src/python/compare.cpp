@@ -131,6 +131,7 @@ py::dict report_dict(const ComparisonReport& r) {
   regime["candidate"] = std::string(to_string(r.candidate_regime));
   regime["exact"] = std::string(to_string(r.exact_shown_regime));
   regime["steady_state"] = std::string(to_string(r.exact_regime));
+  regime["steady_state_method"] = std::string(to_string(r.exact_regime_method));
   regime["window_start"] = r.regime_window_start;
   regime["window_end"] = r.t_last;
   regime["candidate_stops_per_period"] = r.candidate_stops_per_period;

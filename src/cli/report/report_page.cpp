@@ -149,10 +149,11 @@ void model_section(HtmlWriter& html, const ComparisonReport& r) {
   row(html, {"initial time", "t0", g(m.t0), "time"}, numeric);
   html.close("tbody");
   html.close("table");
-  html.element("p", fmt::format("Steady state of this model: {}. Scales of the checks: velocity "
-                                "B/(m w) = {}, displacement B/(m w^2) = {}, period 2 pi/w = {}.",
-                                to_string(r.exact_regime), g(r.velocity_scale),
-                                g(r.displacement_scale), g(r.period)));
+  html.element("p",
+               fmt::format("Steady state of this model: {} ({}). Scales of the checks: velocity "
+                           "B/(m w) = {}, displacement B/(m w^2) = {}, period 2 pi/w = {}.",
+                           to_string(r.exact_regime), to_string(r.exact_regime_method),
+                           g(r.velocity_scale), g(r.displacement_scale), g(r.period)));
 }
 
 void checks_section(HtmlWriter& html, const ComparisonReport& r) {
