@@ -1,5 +1,6 @@
 #include "frictionref/stiff_spring.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -52,7 +53,9 @@ double steps_per_output_for(double output_dt, double dt) {
 }  // namespace
 
 double StiffSpringOptions::stability_limit(const Model& model) const {
-  return 2 * std::sqrt(model.mass / kf);
+  // kf + k: the stiffest the mass sees (stuck slider, model spring).
+  const double zeta = contact_damping;
+  return 2 * (std::sqrt(1 + zeta * zeta) - zeta) * std::sqrt(model.mass / (kf + model.stiffness));
 }
 
 std::uint64_t StiffSpringOptions::steps_per_output(const Model& model) const {
@@ -75,14 +78,18 @@ void StiffSpringOptions::validate(const Model& model) const {
   require_finite("kf", kf);
   require_finite("dt", dt);
   require_finite("output_dt", output_dt);
+  require_finite("contact_damping", contact_damping);
+  if (!(contact_damping >= 0))
+    throw InvalidInput("contact_damping", text(contact_damping), "must be >= 0");
   if (!(kf > 0)) throw InvalidInput("kf", text(kf), "must be > 0");
   if (!(dt >= 0)) throw InvalidInput("dt", text(dt), "must be >= 0 (0: automatic)");
   if (!(output_dt > 0)) throw InvalidInput("output_dt", text(output_dt), "must be > 0");
   const double limit = stability_limit(model);
   if (dt > 0 && !(dt < limit)) {
     throw InvalidInput("dt", text(dt),
-                       "must be < the stability limit 2/sqrt(kf/m) = " + text(limit) +
-                           " of the central-difference scheme (kf = " + text(kf) +
+                       "must be < the stability limit 2 (sqrt(1+zeta^2)-zeta) sqrt(m/(kf+k)) = " +
+                           text(limit) + " of the central-difference scheme (kf = " + text(kf) +
+                           ", k = " + text(model.stiffness) + ", zeta = " + text(contact_damping) +
                            ", m = " + text(model.mass) + ")");
   }
   if (dt > 0 && output_dt < dt) {
@@ -96,7 +103,7 @@ void StiffSpringOptions::validate(const Model& model) const {
     }
     throw InvalidInput("kf", text(kf),
                        "gives an automatic step " + text(wanted) + " (" + text(auto_step_fraction) +
-                           " of 2/sqrt(kf/m)) more than 2^53 times "
+                           " of the stability limit) more than 2^53 times "
                            "smaller than output_dt = " +
                            text(output_dt));
   }
@@ -155,18 +162,45 @@ StiffSpringSimulator::StiffSpringSimulator(const Model& model, double t_end,
   cos_step_ = std::cos(omega_ * dt_);
 
   // Start-up: z0 = x0 (unloaded spring, f0 = 0), and the Taylor step
-  // x_{-1} = x0 - dt v0 + dt^2/2 a0 with a0 = B sin(w t0) / m.
+  // x_{-1} = x0 - dt v0 + dt^2/2 a0 with a0 = (F(t0) - k x0 - c v0) / m.
   x_ = model.x0;
   elongation_ = 0;
   dx_ = dt_ * model.v0 - 0.5 * force_increment_ * std::sin(omega_ * t0_);
+
+  general_ = !model.is_harmonic_coulomb() || options.contact_damping > 0;
+  if (!general_) return;
+  static_force_ = model.static_limit();
+  static_elongation_ = static_force_ / options.kf;
+  dt2_over_m_ = dt2_over_m;
+  contact_dashpot_ = 2 * options.contact_damping * std::sqrt(options.kf * model.mass) / dt_;
+  offset_increment_ = model.force_offset * dt2_over_m;
+  stiffness_increment_ = model.stiffness * dt2_over_m;
+  const double half_damping = 0.5 * model.damping * dt_ / model.mass;
+  damping_scale_ = 1 / (1 + half_damping);
+  damping_keep_ = (1 - half_damping) * damping_scale_;
+  for (const Harmonic& h : model.harmonics) {
+    harmonics_.push_back({h.amplitude * dt2_over_m, h.omega, h.phase, 0, 1, std::sin(h.omega * dt_),
+                          std::cos(h.omega * dt_)});
+  }
+  double start_kick =
+      offset_increment_ - stiffness_increment_ * model.x0 - model.damping * model.v0 * dt2_over_m;
+  for (const Rotation& h : harmonics_)
+    start_kick += h.increment * std::sin(h.omega * t0_ + h.phase);
+  dx_ -= 0.5 * start_kick;
 }
 
-template <bool kSample>
+template <bool kSample, bool kGeneral>
 void StiffSpringSimulator::take_step() {
   const double t = t0_ + static_cast<double>(next_step_) * dt_;
   if (next_step_ % kResyncSteps == 0) {
     sin_ = std::sin(omega_ * t);
     cos_ = std::cos(omega_ * t);
+    if (kGeneral) {
+      for (Rotation& h : harmonics_) {
+        h.sin = std::sin(h.omega * t + h.phase);
+        h.cos = std::cos(h.omega * t + h.phase);
+      }
+    }
   }
   // Return mapping: the trial elongation x_n - z_{n-1}; beyond R / kf the
   // slider moves so that the spring carries exactly R. `kick` is
@@ -174,19 +208,52 @@ void StiffSpringSimulator::take_step() {
   // elongation -> kick -> dx -> elongation is one multiplication and two
   // additions long (the branch is predicted, it is off that chain).
   double f, kick;
-  if (elongation_ > slip_elongation_) {
-    elongation_ = slip_elongation_;
-    f = -friction_;
-    kick = -slip_increment_;
-  } else if (elongation_ < -slip_elongation_) {
-    elongation_ = -slip_elongation_;
-    f = friction_;
-    kick = slip_increment_;
+  if (!kGeneral) {
+    if (elongation_ > slip_elongation_) {
+      elongation_ = slip_elongation_;
+      f = -friction_;
+      kick = -slip_increment_;
+    } else if (elongation_ < -slip_elongation_) {
+      elongation_ = -slip_elongation_;
+      f = friction_;
+      kick = slip_increment_;
+    } else {
+      f = -kf_ * elongation_;
+      kick = -spring_increment_ * elongation_;
+    }
   } else {
-    f = -kf_ * elongation_;
-    kick = -spring_increment_ * elongation_;
+    // A sliding slider goes on while the mass keeps stretching the spring
+    // its way; otherwise it is stuck, and breaks loose beyond Rs.
+    if (sliding_ > 0 && !(elongation_ >= slip_elongation_)) sliding_ = 0;
+    if (sliding_ < 0 && !(elongation_ <= -slip_elongation_)) sliding_ = 0;
+    // Stuck: the spring alone decides the breakaway (the dashpot only damps
+    // the contact's ringing; judged with it, its force would break the
+    // contact loose during the very transient it is there to damp).
+    if (sliding_ == 0) {
+      if (elongation_ > static_elongation_)
+        sliding_ = 1;
+      else if (elongation_ < -static_elongation_)
+        sliding_ = -1;
+    }
+    if (sliding_ != 0) {
+      elongation_ = sliding_ * slip_elongation_;
+      f = -sliding_ * friction_;
+      kick = -sliding_ * slip_increment_;
+    } else {
+      // Held: the spring and the dashpot, together never beyond Rs (the
+      // dashpot would otherwise stop a mass that starts moving in one step).
+      f = -std::clamp(kf_ * elongation_ + contact_dashpot_ * dx_, -static_force_, static_force_);
+      kick = f * dt2_over_m_;
+    }
   }
-  const double dx_next = (dx_ + force_increment_ * sin_) + kick;
+  double dx_next;
+  if (!kGeneral) {
+    dx_next = (dx_ + force_increment_ * sin_) + kick;
+  } else {
+    double load = force_increment_ * sin_ + offset_increment_ - stiffness_increment_ * x_ + kick;
+    for (const Rotation& h : harmonics_) load += h.increment * h.sin;
+    dx_next = damping_keep_ * dx_ + damping_scale_ * load;
+  }
 
   if (kSample) {
     last_.t = t;
@@ -203,13 +270,24 @@ void StiffSpringSimulator::take_step() {
   const double sin_next = sin_ * cos_step_ + cos_ * sin_step_;
   cos_ = cos_ * cos_step_ - sin_ * sin_step_;
   sin_ = sin_next;
+  if (kGeneral) {
+    for (Rotation& h : harmonics_) {
+      const double h_sin = h.sin * h.cos_step + h.cos * h.sin_step;
+      h.cos = h.cos * h.cos_step - h.sin * h.sin_step;
+      h.sin = h_sin;
+    }
+  }
   ++next_step_;
 }
 
 void StiffSpringSimulator::run_to(std::uint64_t n) {
   if (next_step_ > n) return;
-  while (next_step_ < n) take_step<false>();
-  take_step<true>();
+  if (general_) {
+    while (next_step_ < n) take_step<false, true>();
+  } else {
+    while (next_step_ < n) take_step<false, false>();
+  }
+  step_once<true>();
 }
 
 bool StiffSpringSimulator::next(StiffSample& sample) {
@@ -234,7 +312,7 @@ bool StiffSpringSimulator::next(StiffSample& sample) {
   sample = last_;
   if (fraction > 0) {
     const StiffSample low = last_;
-    take_step<true>();
+    step_once<true>();
     const auto mix = [fraction](double a, double b) { return a + fraction * (b - a); };
     sample.x = mix(low.x, last_.x);
     sample.v = mix(low.v, last_.v);

@@ -1,34 +1,42 @@
 // The stiff-spring ("penalty") friction model that the exact solution is used
-// to check, as in DYNARACK (USNRC problem 7; docs/stiff-spring.md).
+// to check, as in DYNARACK (USNRC problem 7; docs/stiff-spring.md), for every
+// model of the family (model.hpp).
 //
 // Friction acts through a spring of stiffness kf in series with a Coulomb
 // slider at position z:
 //
-//   m x'' = B sin(w t) + f,   f = -kf (x - z),   |f| <= R.
+//   m x'' + c x' + k x = F(t) + f,   f = -kf (x - z),
+//   F(t) = F0 + B sin(w t) + sum_i B_i sin(w_i t + phi_i).
 //
-// While |kf (x - z)| < R the slider stays put (the mass rings on the spring);
-// when the spring force would exceed R the slider moves so that |f| = R
-// exactly (a return mapping, as in elastoplasticity). Static = sliding = R.
+// The slider is stuck (the mass rings on the spring) until the spring force
+// |kf (x - z)| exceeds the static friction Rs; then it breaks loose and slides
+// with |f| = R exactly (a return mapping, as in elastoplasticity), and it
+// sticks again as soon as the mass turns back (the spring unloads). With
+// Rs = R this is the seed's rule: the slider moves whenever |f| would exceed R.
 //
 // Time stepping: the explicit central-difference scheme
 //
-//   x_{n+1} = 2 x_n - x_{n-1} + dt^2 (B sin(w t_n) + f_n) / m,   t_n = t0 + n dt,
+//   m (x_{n+1} - 2 x_n + x_{n-1}) / dt^2 + c (x_{n+1} - x_{n-1}) / (2 dt) + k x_n
+//     = F(t_n) + f_n,   t_n = t0 + n dt,
 //
-// run in its equivalent increment form dx_{n+1/2} = dx_{n-1/2} + dt^2 a_n,
-// x_{n+1} = x_n + dx_{n+1/2} (dx = dt v at the half steps), which rounds
-// better than 2 x_n - x_{n-1}; the spring elongation x - z is carried as its
-// own variable, so the friction force never comes from the difference of two
-// large positions. Stable for dt < 2 / sqrt(kf / m). The archived velocity is
-// the central difference v_n = (x_{n+1} - x_{n-1}) / (2 dt).
+// run in its equivalent increment form (dx = x_{n+1} - x_n = dt v_{n+1/2}):
+// (1 + c dt / 2m) dx_{n+1/2} = (1 - c dt / 2m) dx_{n-1/2} + dt^2 (F_n - k x_n + f_n) / m,
+// x_{n+1} = x_n + dx_{n+1/2}, which rounds better than 2 x_n - x_{n-1}; the
+// spring elongation x - z is carried as its own variable, so the friction force
+// never comes from the difference of two large positions. The damper is
+// time-centred, so the scheme is second order and stable for
+// dt < 2 / sqrt((kf + k) / m), whatever c. The archived velocity is the
+// central difference v_n = (x_{n+1} - x_{n-1}) / (2 dt).
 //
 // Start-up: the slider starts at the mass (z0 = x0: the spring is unloaded,
-// f0 = 0) and x_{-1} comes from a Taylor step,
-// x_{-1} = x0 - dt v0 + dt^2 / 2 * B sin(w t0) / m. So with v0 != 0 the
-// first step carries no friction, and the velocity is off by R dt / (2 m)
+// f0 = 0, stuck) and x_{-1} comes from a Taylor step,
+// x_{-1} = x0 - dt v0 + dt^2 / 2 * (F(t0) - k x0 - c v0) / m. So with v0 != 0
+// the first step carries no friction, and the velocity is off by R dt / (2 m)
 // until the first stop: first order in dt (docs/stiff-spring.md).
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "frictionref/model.hpp"
 
@@ -50,11 +58,24 @@ struct StiffSpringOptions {
   // t_end - 1e-9 output_dt, the `curve` grid rule) and at t_end itself.
   double output_dt = 0.01;
 
+  // Damping ratio zeta of the friction contact [1]; finite, >= 0, default 0
+  // (the seed's undamped spring, as DYNARACK): a dashpot cf = 2 zeta
+  // sqrt(kf m) in parallel with the friction spring while the slider is
+  // stuck. Why: at every stop the undamped spring rings about its new
+  // equilibrium with an overshoot as large as the force change, whatever kf;
+  // with Rs > R the ringing reaches Rs and breaks the contact loose again, so
+  // the model does not converge to the exact solution as kf grows
+  // (docs/stiff-spring.md). zeta near 1 removes the overshoot.
+  double contact_damping = 0;
+
   // The automatic step as a fraction of the stability limit.
   static constexpr double auto_step_fraction = 0.1;
 
   // The stability limit of the central-difference scheme on the friction
-  // spring, 2 / sqrt(kf / m) = 2 sqrt(m / kf) [time] (+inf if it overflows).
+  // spring and the model's spring, 2 (sqrt(1 + zeta^2) - zeta) / sqrt((kf + k) / m)
+  // [time] (+inf if it overflows): the contact dashpot is explicit (it uses
+  // the velocity of the half step before), which shortens the undamped limit
+  // by that factor.
   double stability_limit(const Model& model) const;
 
   // The time step the simulator uses: dt (or the automatic step), reduced to
@@ -65,8 +86,9 @@ struct StiffSpringOptions {
   // Steps per archive step N (output_dt = N * step, up to rounding); >= 1.
   std::uint64_t steps_per_output(const Model& model) const;
 
-  // Throws InvalidInput naming the field ("kf", "dt", "output_dt"), its value
-  // and the rule: NaN or infinity; kf <= 0; dt < 0; output_dt <= 0;
+  // Throws InvalidInput naming the field ("kf", "dt", "output_dt",
+  // "contact_damping"), its value and the rule: NaN or infinity; kf <= 0;
+  // dt < 0; output_dt <= 0; contact_damping < 0;
   // dt >= the stability limit (the message gives the limit); output_dt < dt.
   // Validates the model first.
   void validate(const Model& model) const;
@@ -77,15 +99,18 @@ struct StiffSample {
   double t = 0;  // time [time]: t0 + k output_dt (from k, never accumulated), or t_end
   double x = 0;  // mass position [length]
   double v = 0;  // central-difference velocity (x_{n+1} - x_{n-1}) / (2 dt) [length / time]
-  double f = 0;  // friction (spring) force on the mass, -kf (x - z); |f| <= R [force]
+  double f = 0;  // friction force on the mass, -kf (x - z) (- cf x' while stuck) [force];
+                 // |f| <= Rs
   double z = 0;  // slider position [length]
 };
 
 // Streams samples of the stiff-spring model from t0 to t_end. Memory is flat
-// for any horizon and a time step allocates nothing. The force B sin(w t_n)
-// comes from a rotation through w dt (four multiplications), re-anchored with
-// std::sin and std::cos of w t_n every 64 steps, so a step costs less than one
-// std::cos call.
+// for any horizon and a time step allocates nothing. Each harmonic term
+// B_i sin(w_i t_n + phi_i) comes from a rotation through w_i dt (four
+// multiplications), re-anchored with std::sin and std::cos of w_i t_n + phi_i
+// every 64 steps, so a step of the seed's model costs less than one std::cos
+// call. The seed's model (model.hpp's is_harmonic_coulomb()) runs a step
+// without the spring, damper and static-friction terms.
 //
 // The sample at t_end, when t_end is not a time step, is the linear
 // interpolation (in t) of the samples of the two steps around it.
@@ -116,9 +141,14 @@ class StiffSpringSimulator {
 
  private:
   void run_to(std::uint64_t n);  // steps until the sample of step n is in last_
-  // Step next_step_ (its sample into last_ if kSample), then advance.
-  template <bool kSample>
+  // Step next_step_ (its sample into last_ if kSample), then advance; the
+  // seed's model or (kGeneral) any model.
+  template <bool kSample, bool kGeneral>
   void take_step();
+  template <bool kSample>
+  void step_once() {
+    general_ ? take_step<kSample, true>() : take_step<kSample, false>();
+  }
 
   Model model_;
   double t_end_;
@@ -143,6 +173,26 @@ class StiffSpringSimulator {
   double force_increment_, spring_increment_, slip_increment_;
   double half_over_dt_;
   double sin_step_ = 0, cos_step_ = 1;
+
+  // Any other model (general_): the extra harmonics as rotations, the
+  // slider's state, and the constants of the spring, damper and static friction.
+  struct Rotation {
+    double increment;           // dt^2 B_i / m
+    double omega, phase;        // w_i, phi_i
+    double sin, cos;            // of w_i t_n + phi_i
+    double sin_step, cos_step;  // of w_i dt
+  };
+  bool general_ = false;
+  std::vector<Rotation> harmonics_;
+  int sliding_ = 0;                 // +1 / -1: the slider slides that way; 0: stuck
+  double static_force_ = 0;         // Rs
+  double static_elongation_ = 0;    // Rs / kf
+  double contact_dashpot_ = 0;      // cf / dt (times dx: the dashpot's force)
+  double dt2_over_m_ = 0;           // dt^2 / m
+  double offset_increment_ = 0;     // dt^2 F0 / m
+  double stiffness_increment_ = 0;  // dt^2 k / m
+  double damping_keep_ = 1;         // (1 - c dt / 2m) / (1 + c dt / 2m)
+  double damping_scale_ = 1;        // 1 / (1 + c dt / 2m)
 
   StiffSample last_;  // sample of step next_step_ - 1
   std::uint64_t output_index_ = 0;

@@ -20,7 +20,7 @@ same one-line messages, raised as ValueError; wrong types raise TypeError):
     summary(model, t_end)    counts and the final state, flat memory
     curve(model, t)          x, v, a, phase at any times; or on the CLI's grid
     classify(model)          the steady state (dict)
-    stiff(model, t_end)      the seed's stiff-spring (penalty) model
+    stiff(model, t_end)      the stiff-spring (penalty) model
     compare(model, t, v)     another code's time history against the exact one
     sweep(...), map(...)     parameter studies on all cores, by shards
     distributed.map(client, ...)  a map on a Dask cluster, by shards

@@ -21,6 +21,7 @@
 #include "frictionref/stiff_spring.hpp"
 #include "model_options.hpp"
 #include "model_title.hpp"
+#include "stiff.hpp"
 
 namespace frictionref::cli {
 namespace {
@@ -31,6 +32,7 @@ struct ConvergenceOptions {
   std::string kf_list = "1e3,1e4,1e5,1e6,1e7,1e8,1e9";
   std::string dt_fractions = "0.5,0.1,0.02";
   std::string output_dt = "0.01";
+  std::string contact_damping = "0";
   std::string format = "csv";
   OutputFileOption output;
   std::string plot;
@@ -55,10 +57,12 @@ std::vector<double> parse_list(const std::string& text, const std::string& optio
   while (std::getline(items, item, ',')) {
     const double value = parse_number({option, item});
     if (!std::isfinite(value) || !(value > 0))
-      throw bad_input(fmt::format("{} = {}: every entry must be a finite number > 0", option, text));
+      throw bad_input(
+          fmt::format("{} = {}: every entry must be a finite number > 0", option, text));
     values.push_back(value);
   }
-  if (values.empty()) throw bad_input(fmt::format("{} = {}: must list at least one value", option, text));
+  if (values.empty())
+    throw bad_input(fmt::format("{} = {}: must list at least one value", option, text));
   if (values.size() > 20) throw bad_input(fmt::format("{} = {}: at most 20 values", option, text));
   return values;
 }
@@ -102,7 +106,9 @@ void write_csv(std::FILE* out, const std::vector<Run>& runs) {
 }
 
 void write_markdown(std::FILE* out, const std::vector<Run>& runs) {
-  const auto g = [](double value) { return std::isnan(value) ? std::string("-") : fmt::format("{:.3g}", value); };
+  const auto g = [](double value) {
+    return std::isnan(value) ? std::string("-") : fmt::format("{:.3g}", value);
+  };
   std::fputs(
       "| K_f | dt / limit | dt | max \\|v error\\| / (B/(m w)) | max stop-time error | "
       "matched / missed / extra stops | order (v) | order (stop) | compare |\n"
@@ -119,14 +125,18 @@ void write_markdown(std::FILE* out, const std::vector<Run>& runs) {
 
 Figure convergence_figure(const Model& model, const std::vector<Run>& runs,
                           const std::vector<double>& fractions) {
-  Panel velocity = make_panel("max velocity error", "K_f [force/length]",
-                              "max |v - v_exact| / (B/(m w))", {});
+  Panel velocity =
+      make_panel("max velocity error", "K_f [force/length]", "max |v - v_exact| / (B/(m w))", {});
   Panel stops = make_panel("max stop-time error (matched sticks)", "K_f [force/length]",
                            "max |t_stiff - t_exact| [time]", {});
   velocity.log_x = velocity.log_y = stops.log_x = stops.log_y = true;
   for (double fraction : fractions) {
-    Series v{fmt::format("dt = {} x stability limit", fraction), {}, {}, Series::Role::candidate,
-             false, true};
+    Series v{fmt::format("dt = {} x stability limit", fraction),
+             {},
+             {},
+             Series::Role::candidate,
+             false,
+             true};
     Series s = v;
     for (const Run& r : runs) {
       if (r.dt_fraction != fraction) continue;
@@ -148,22 +158,26 @@ ExitCode run_convergence(const ConvergenceOptions& options, const Invocation& in
   TypedInputs inputs = options.model.typed_inputs();
   inputs["t_end"] = {"--t-end", options.t_end};
   inputs["output_dt"] = {"--output-dt", options.output_dt};
+  inputs["contact_damping"] = {"--contact-damping", options.contact_damping};
   const Model model = options.model.model();
+  const double contact_damping = parse_number(inputs.at("contact_damping"));
   const double t_end = parse_number(inputs.at("t_end"));
   const double output_dt = parse_number(inputs.at("output_dt"));
   const std::vector<double> kfs = parse_list(options.kf_list, "--kf-list");
   const std::vector<double> fractions = parse_list(options.dt_fractions, "--dt-fractions");
   for (double fraction : fractions)
     if (!(fraction < 1))
-      throw bad_input(fmt::format("--dt-fractions = {}: every entry must be < 1 (the step must "
-                                  "stay below the stability limit)",
-                                  options.dt_fractions));
+      throw bad_input(
+          fmt::format("--dt-fractions = {}: every entry must be < 1 (the step must "
+                      "stay below the stability limit)",
+                      options.dt_fractions));
   if (options.format != "csv" && options.format != "markdown")
     throw bad_input(fmt::format("--format = {}: must be csv or markdown", options.format));
   if (!(model.amplitude > 0))
-    throw bad_input(fmt::format("--amplitude = {}: must be > 0 for convergence (errors are "
-                                "relative to B/(m w))",
-                                model.amplitude));
+    throw bad_input(
+        fmt::format("--amplitude = {}: must be > 0 for convergence (errors are "
+                    "relative to B/(m w))",
+                    model.amplitude));
   if (!options.plot.empty()) require_figure_path(options.plot, "--plot");
 
   // Every run is validated before any is computed: bad input costs nothing.
@@ -174,6 +188,7 @@ ExitCode run_convergence(const ConvergenceOptions& options, const Invocation& in
       StiffSpringOptions stiff;
       stiff.kf = kf;
       stiff.output_dt = output_dt;
+      stiff.contact_damping = contact_damping;
       stiff.dt = std::fmin(fraction * stiff.stability_limit(model), output_dt);
       inputs["kf"] = {"--kf-list", fmt::format("{}", kf)};
       const StiffSpringSimulator probe =
@@ -183,9 +198,10 @@ ExitCode run_convergence(const ConvergenceOptions& options, const Invocation& in
     }
   }
   if (total_steps > 10'000'000'000ULL)
-    throw bad_input(fmt::format("--kf-list = {}: the runs need {} time steps in all, more than "
-                                "10^10; use a shorter --t-end or fewer/smaller stiffnesses",
-                                options.kf_list, total_steps));
+    throw bad_input(
+        fmt::format("--kf-list = {}: the runs need {} time steps in all, more than "
+                    "10^10; use a shorter --t-end or fewer/smaller stiffnesses",
+                    options.kf_list, total_steps));
 
   std::vector<Run> runs;
   for (std::size_t i = 0; i < settings.size(); ++i) {
@@ -198,7 +214,8 @@ ExitCode run_convergence(const ConvergenceOptions& options, const Invocation& in
     run.report = compare(model, stiff_history(model, t_end, settings[i]));
     for (const MatchedStick& m : run.report.matched) {
       const double worst = std::fmax(std::fabs(m.start_error), std::fabs(m.end_error));
-      run.stop_time_error = std::isnan(run.stop_time_error) ? worst : std::fmax(run.stop_time_error, worst);
+      run.stop_time_error =
+          std::isnan(run.stop_time_error) ? worst : std::fmax(run.stop_time_error, worst);
     }
     if (i >= fractions.size()) {
       const Run& before = runs[i - fractions.size()];
@@ -212,19 +229,26 @@ ExitCode run_convergence(const ConvergenceOptions& options, const Invocation& in
 
   AtomicOutput out(options.output.path(), "-o");
   if (options.format == "csv") {
-    write_metadata(out.stream(), model, invocation.command_line,
-                   {fmt::format("convergence: t_end={} output_dt={} kf_list={} dt_fractions={}",
-                                t_end, output_dt, options.kf_list, options.dt_fractions),
-                    "errors of the stiff-spring model (central differences, friction spring "
-                    "K_f in series with a Coulomb slider) against the exact solution, judged by "
-                    "`frictionref compare` with its default tolerances",
-                    "order_*: p in error ~ K_f^-p between this K_f and the previous one at the "
-                    "same dt_fraction"});
+    std::vector<std::string> metadata = {
+        fmt::format("convergence: t_end={} output_dt={} kf_list={} dt_fractions={} "
+                    "contact_damping={}",
+                    t_end, output_dt, options.kf_list, options.dt_fractions, contact_damping),
+        "errors of the stiff-spring model (central differences, friction spring "
+        "K_f in series with a Coulomb slider) against the exact solution, judged by "
+        "`frictionref compare` with its default tolerances",
+        "order_*: p in error ~ K_f^-p between this K_f and the previous one at the "
+        "same dt_fraction"};
+    StiffSpringOptions first;
+    first.contact_damping = contact_damping;
+    const std::string note = stiff_ringing_note(model, first);
+    if (!note.empty()) metadata.push_back(note);
+    write_metadata(out.stream(), model, invocation.command_line, metadata);
     write_csv(out.stream(), runs);
   } else {
     write_markdown(out.stream(), runs);
   }
-  if (!options.plot.empty()) write_figure(convergence_figure(model, runs, fractions), options.plot, "--plot");
+  if (!options.plot.empty())
+    write_figure(convergence_figure(model, runs, fractions), options.plot, "--plot");
   out.commit();
   return exit_success;
 }
@@ -234,31 +258,42 @@ ExitCode run_convergence(const ConvergenceOptions& options, const Invocation& in
 Command add_convergence_command(CLI::App& app) {
   auto options = std::make_shared<ConvergenceOptions>();
   CLI::App* command = app.add_subcommand(
-      "convergence", "Error of the stiff-spring model against the exact solution as K_f and dt vary");
+      "convergence",
+      "Error of the stiff-spring model against the exact solution as K_f and dt vary");
   options->model.add_to(*command);
   numeric(command->add_option("--t-end", options->t_end, "horizon T [time]; > t0"))
       ->type_name("T")
       ->capture_default_str();
-  command->add_option("--kf-list", options->kf_list,
-                      "friction spring stiffnesses to run [force/length], comma-separated")
+  command
+      ->add_option("--kf-list", options->kf_list,
+                   "friction spring stiffnesses to run [force/length], comma-separated")
       ->type_name("K1,K2,...")
       ->capture_default_str();
-  command->add_option("--dt-fractions", options->dt_fractions,
-                      "time steps as fractions (< 1) of the stability limit 2 sqrt(m/K_f), "
-                      "comma-separated; a step above --output-dt is cut to it")
+  command
+      ->add_option("--dt-fractions", options->dt_fractions,
+                   "time steps as fractions (< 1) of the stability limit "
+                   "2 (sqrt(1+Z^2)-Z) sqrt(m/(K_f+k)), "
+                   "comma-separated; a step above --output-dt is cut to it")
       ->type_name("F1,F2,...")
       ->capture_default_str();
   numeric(command->add_option("--output-dt", options->output_dt,
                               "archive step of the stiff runs, where errors are measured [time]"))
       ->type_name("H")
       ->capture_default_str();
+  numeric(command->add_option("--contact-damping", options->contact_damping,
+                              "damping ratio Z of the friction contact while stuck, as `stiff` "
+                              "[1]; >= 0; with static friction > R use about 1, or the runs do "
+                              "not converge"))
+      ->type_name("Z")
+      ->capture_default_str();
   command->add_option("--format", options->format, "table format: csv or markdown")
       ->type_name("FORMAT")
       ->capture_default_str();
   options->output.add_to(*command);
-  command->add_option("--plot", options->plot,
-                      "also draw both errors against K_f on log-log axes into FILE (.svg or "
-                      ".png; needs gnuplot)")
+  command
+      ->add_option("--plot", options->plot,
+                   "also draw both errors against K_f on log-log axes into FILE (.svg or "
+                   ".png; needs gnuplot)")
       ->type_name("FILE");
   command->footer(
       "For every K_f and every dt fraction, runs the stiff-spring model (as `frictionref stiff`)\n"

@@ -14,16 +14,20 @@ namespace frictionref::python {
 namespace {
 
 py::array stiff(const PyModel& model, py::handle t_end_object, py::handle kf_object,
-                py::handle dt_object, py::handle output_dt_object, py::handle force_object) {
+                py::handle dt_object, py::handle output_dt_object,
+                py::handle contact_damping_object, py::handle force_object) {
   const Number t_end = number(t_end_object, "t_end");
   const Number kf = number(kf_object, "kf");
   const Number output_dt = number(output_dt_object, "output_dt");
+  const Number contact_damping = number(contact_damping_object, "contact_damping");
   const bool force = flag(force_object, "force");
   TypedInputs inputs = model.input.typed_inputs();
   inputs["t_end"] = {"--t-end", t_end.text};
   inputs["kf"] = {"--kf", kf.text};
   inputs["output_dt"] = {"--output-dt", output_dt.text};
+  inputs["contact_damping"] = {"--contact-damping", contact_damping.text};
   StiffSpringOptions options;
+  options.contact_damping = contact_damping.value;
   options.kf = kf.value;
   options.output_dt = output_dt.value;
   Number dt;
@@ -47,9 +51,9 @@ py::array stiff(const PyModel& model, py::handle t_end_object, py::handle kf_obj
   if (!force && static_cast<double>(steps) > 1e12) {
     const std::string culprit =
         dt_object.is_none() ? "--t-end = " + t_end.text : "--dt = " + dt.text;
-    value_error(culprit + ": " + std::to_string(steps) + " time steps of dt = " +
-                number_text(simulator.step()) + " (--kf = " + kf.text + ") up to t = " +
-                t_end.text + ", more than 10^12; pass --force to run anyway");
+    value_error(culprit + ": " + std::to_string(steps) +
+                " time steps of dt = " + number_text(simulator.step()) + " (--kf = " + kf.text +
+                ") up to t = " + t_end.text + ", more than 10^12; pass --force to run anyway");
   }
   require_memory(static_cast<double>(rows), sizeof(StiffSample), "--output-dt = " + output_dt.text,
                  "pass a larger output_dt or a shorter t_end");
@@ -58,7 +62,8 @@ py::array stiff(const PyModel& model, py::handle t_end_object, py::handle kf_obj
     py::gil_scoped_release release;
     samples.reserve(rows);
     // A sample may cost up to steps / rows time steps.
-    SignalCheck interrupt(std::max<std::uint64_t>(1, (1u << 20) / std::max<std::uint64_t>(1, steps / std::max<std::uint64_t>(1, rows))));
+    SignalCheck interrupt(std::max<std::uint64_t>(
+        1, (1u << 20) / std::max<std::uint64_t>(1, steps / std::max<std::uint64_t>(1, rows))));
     StiffSample sample;
     while (simulator.next(sample)) {
       samples.push_back(sample);
@@ -78,15 +83,20 @@ py::array stiff(const PyModel& model, py::handle t_end_object, py::handle kf_obj
 }  // namespace
 
 void bind_stiff(py::module_& m) {
-  m.def("stiff", &stiff, py::arg("model"), py::arg("t_end"), py::kw_only(),
-        py::arg("kf") = 1e7, py::arg("dt") = py::none(), py::arg("output_dt") = 0.01,
+  m.def("stiff", &stiff, py::arg("model"), py::arg("t_end"), py::kw_only(), py::arg("kf") = 1e7,
+        py::arg("dt") = py::none(), py::arg("output_dt") = 0.01, py::arg("contact_damping") = 0.0,
         py::arg("force") = false,
-        R"doc(The stiff-spring (penalty friction) model of the seed, by explicit central
-differences (the CLI's `stiff`; docs/stiff-spring.md): friction through a
-spring kf in series with a Coulomb slider, |f| <= R. Only the seed's
-forcing B sin(w t) and R are used (static friction = sliding).
+        R"doc(The stiff-spring (penalty friction) model, by explicit central differences
+(the CLI's `stiff`; docs/stiff-spring.md), for every model: friction through
+a spring kf in series with a Coulomb slider that breaks loose when the
+spring force exceeds the static friction Rs and slides with |f| = R; the
+model's spring, damper, offset and harmonics act on the mass.
 
-dt: the time step (default None: 0.1 of the stability limit 2 sqrt(m/kf)),
+contact_damping: damping ratio zeta of the contact while stuck (a dashpot
+2 zeta sqrt(kf m) beside the spring); with Rs > R use about 1, or the
+undamped spring rings past Rs at every stop and the model does not converge.
+dt: the time step (default None: 0.1 of the stability limit
+2 (sqrt(1+zeta^2)-zeta) sqrt(m/(kf+k))),
 reduced to divide output_dt; rows at t0 + k output_dt and at t_end. Returns
 a structured array with the fields t, x, v (central difference), f (the
 friction force on the mass) and z (the slider). Above 10^9 rows or 10^12

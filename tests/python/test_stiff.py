@@ -35,3 +35,24 @@ def test_consistency_with_the_cli_stiff(cli):
     assert len(rows) == len(s)
     for row, got in zip(rows, s):
         assert [float(row[k]) for k in "txv"] == [got[k] for k in "txv"]
+
+
+def test_general_model_with_a_damped_contact_matches_the_cli_and_holds_rs(cli):
+    # Spring, second harmonic, static friction above R: the spring's force
+    # never exceeds Rs, the slider slides with exactly R, and the values are
+    # the binary's to the bit.
+    args = ["--lambda", "0.6", "--static-lambda", "0.8", "--stiffness", "0.5",
+            "--harmonic", "0.3,2"]
+    model = frictionref.Model(lambda_=0.6, static_lambda=0.8, stiffness=0.5,
+                              harmonics=[(0.3, 2)])
+    code, out, _ = cli("stiff", *args, "--t-end", "5", "--kf", "1e5",
+                       "--contact-damping", "1")
+    assert code == 0
+    rows = read_csv(out)
+    s = frictionref.stiff(model, 5, kf=1e5, contact_damping=1)
+    assert len(rows) == len(s)
+    for row, got in zip(rows, s):
+        assert [float(row[k]) for k in "txv"] == [got[k] for k in "txv"]
+    assert np.all(np.abs(s["f"]) <= 0.8)
+    spring = -1e5 * (s["x"] - s["z"])
+    assert np.all(np.abs(spring) <= 0.8 * (1 + 1e-9))
