@@ -50,12 +50,13 @@ std::string parse_error_message(const CLI::App& app, const CLI::ParseError& erro
 
 int run(int argc, char** argv) {
   CLI::App app(
-      "frictionref: the exact motion of a mass m on a surface with Coulomb friction R, driven "
-      "by the force B sin(w t):\n"
-      "  m x'' = B sin(w t) - R while sliding forward (v > 0), + R while sliding back (v < 0);\n"
-      "  at rest while |B sin(w t)| <= R (static friction = sliding friction).\n"
-      "Each phase is solved in closed form and every stop, reversal and breakaway is found\n"
-      "exactly: no time step, no tolerance. lambda = R / B decides the steady state.",
+      "frictionref: the exact motion of a mass m with Coulomb friction, a spring k and a\n"
+      "damper c, driven by F(t) = F0 + B sin(w t) + sum B_i sin(w_i t + phi_i):\n"
+      "  m x'' + c x' + k x = F(t) - R sign(v) while sliding (friction R);\n"
+      "  at rest while |F(t) - k x| <= Rs (static friction Rs >= R, default R).\n"
+      "The seed's model is k = c = F0 = 0, one harmonic, Rs = R: lambda = R / B decides its\n"
+      "steady state. Each phase is solved in closed form and every stop, reversal and\n"
+      "breakaway is found exactly: no time step, no tolerance.",
       "frictionref");
   app.set_version_flag("--version", std::string("frictionref ") + version,
                        "print 'frictionref <version>' and exit");
