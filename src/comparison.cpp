@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "comparison/resolution.hpp"
 #include "frictionref/classification.hpp"
 #include "frictionref/detail/number_text.hpp"
 #include "frictionref/error.hpp"
@@ -177,7 +178,17 @@ std::string_view to_string(CheckKind kind) {
   return "unknown";
 }
 
-std::string_view to_string(Verdict verdict) { return verdict == Verdict::pass ? "PASS" : "FAIL"; }
+std::string_view to_string(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::pass:
+      return "PASS";
+    case Verdict::fail:
+      return "FAIL";
+    case Verdict::inconclusive:
+      return "INCONCLUSIVE";
+  }
+  return "?";
+}
 
 std::optional<CheckKind> check_kind_from_string(std::string_view text) {
   for (CheckKind kind :
@@ -191,6 +202,7 @@ std::optional<CheckKind> check_kind_from_string(std::string_view text) {
 std::optional<Verdict> verdict_from_string(std::string_view text) {
   if (text == "PASS") return Verdict::pass;
   if (text == "FAIL") return Verdict::fail;
+  if (text == "INCONCLUSIVE") return Verdict::inconclusive;
   return std::nullopt;
 }
 
@@ -269,8 +281,10 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
   // The engine's stick phases up to the last candidate time (a record
   // shorter than the engine's time resolution still gets a horizon it takes).
   ExactEngine engine(model, resolvable_t_end(model, r.t_last));
+  std::vector<Phase> phases;
   Phase phase;
   while (engine.next(phase)) {
+    if (phase.t_begin < r.t_last) phases.push_back(phase);
     if (phase.kind != PhaseKind::stick || !(phase.t_begin < r.t_last)) continue;
     StickInterval stick;
     stick.start = phase.t_begin;
@@ -483,9 +497,18 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
             shown(r.exact_shown_regime, r.exact_stops_per_period) + "; steady state " +
             steady_text(r.exact_regime, r.exact_regime_method));
   }
-  r.verdict = std::all_of(r.checks.begin(), r.checks.end(), [](const Check& c) { return c.passed; })
-                  ? Verdict::pass
-                  : Verdict::fail;
+  // Whether the samples see every exact phase and event: a check that passed
+  // without looking is no evidence.
+  const comparison::Resolution seen = comparison::resolution(phases, history.t, r.stop_time_margin);
+  r.unresolved = seen.parts;
+  r.unresolved_phases = seen.phases;
+  r.unresolved_events = seen.events;
+  r.resolving_step = seen.resolving_step;
+  const bool all_passed =
+      std::all_of(r.checks.begin(), r.checks.end(), [](const Check& c) { return c.passed; });
+  r.verdict = !all_passed                                     ? Verdict::fail
+              : r.unresolved_phases + r.unresolved_events > 0 ? Verdict::inconclusive
+                                                              : Verdict::pass;
 
   if (r.max_spacing > r.stop_time_margin)
     r.notes.push_back("the largest sample spacing " + g(r.max_spacing) +
@@ -513,17 +536,58 @@ std::vector<std::string> ComparisonReport::failed_checks() const {
   return names;
 }
 
+std::string ComparisonReport::resolution_text() const {
+  std::string out;
+  const auto list = [&](UnresolvedPart::Kind kind, std::size_t total) {
+    std::string items;
+    std::size_t shown = 0;
+    for (const UnresolvedPart& p : unresolved) {
+      if (p.kind != kind || shown == 5) continue;
+      items += (shown++ ? ", " : "");
+      if (kind == UnresolvedPart::Kind::phase)
+        items += std::string(to_string(p.phase)) + " [" + g(p.start) + ", " + g(p.end) +
+                 "] (samples " + g(p.spacing) + " apart)";
+      else
+        items +=
+            (p.phase == PhaseKind::stick ? "stop" : "start of " + std::string(to_string(p.phase))) +
+            " at t = " + g(p.start) + " (samples " + g(p.spacing) + " apart)";
+    }
+    if (total > shown) items += ", ...";
+    return items;
+  };
+  if (unresolved_phases > 0)
+    out += std::to_string(unresolved_phases) + " exact phase" + (unresolved_phases > 1 ? "s" : "") +
+           " longer than the stop-time tolerance " + g(stop_time_margin) + " hold" +
+           (unresolved_phases > 1 ? "" : "s") +
+           " no sample: " + list(UnresolvedPart::Kind::phase, unresolved_phases);
+  if (unresolved_events > 0)
+    out += std::string(out.empty() ? "" : "; ") + std::to_string(unresolved_events) +
+           " exact event" + (unresolved_events > 1 ? "s lie" : " lies") +
+           " between samples further apart than that tolerance " + g(stop_time_margin) + ": " +
+           list(UnresolvedPart::Kind::event, unresolved_events);
+  return out;
+}
+
+std::string ComparisonReport::resolution_advice() const {
+  if (resolving_step > 0) return "archive at most every " + g(resolving_step) + " to resolve them";
+  return "no archive step can with a stop-time tolerance of 0 (samples would have to fall on "
+         "the events)";
+}
+
 std::string ComparisonReport::brief_report() const {
   std::string out;
   for (const Check& check : checks)
     out += std::string(check.name()) + ": " + (check.passed ? "PASS " : "FAIL ") + check.message +
            "\n";
+  if (unresolved_phases + unresolved_events > 0) out += "resolution: " + resolution_text() + "\n";
   out += "verdict: " + std::string(to_string(verdict));
   const std::vector<std::string> failed = failed_checks();
   if (!failed.empty()) {
     out += " (checks ";
     for (std::size_t i = 0; i < failed.size(); ++i) out += (i ? ", " : "") + failed[i];
     out += ")";
+  } else if (verdict == Verdict::inconclusive) {
+    out += " (the samples do not resolve the exact motion: " + resolution_advice() + ")";
   }
   return out + "\n";
 }

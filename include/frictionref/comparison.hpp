@@ -24,6 +24,7 @@
 
 #include "frictionref/classification.hpp"
 #include "frictionref/model.hpp"
+#include "frictionref/phase.hpp"
 #include "frictionref/time_history.hpp"
 #include "frictionref/types.hpp"
 
@@ -65,14 +66,16 @@ enum class CheckKind {
 };
 
 enum class Verdict {
-  pass,  // every check passed
-  fail,  // at least one check failed
+  pass,          // every check passed, and the samples resolve the exact motion
+  fail,          // at least one check failed
+  inconclusive,  // every check passed, but the samples cannot see part of the exact
+                 // motion (ComparisonReport::unresolved): a defect there would pass too
 };
 
 // "velocity_max", "velocity_rms", "displacement_max", "stop_times",
 // "missed_stops", "extra_stops", "creep", "regime"
 std::string_view to_string(CheckKind kind);
-// "PASS", "FAIL"
+// "PASS", "FAIL", "INCONCLUSIVE"
 std::string_view to_string(Verdict verdict);
 std::optional<CheckKind> check_kind_from_string(std::string_view text);
 std::optional<Verdict> verdict_from_string(std::string_view text);
@@ -101,6 +104,20 @@ struct MatchedStick {
   double phase_start = 0;   // the exact stick phase (engine) inside it: its start [time];
                             // NaN if there is none (|v| small without stopping)
   double phase_end = 0;     // ... its end [time]; NaN if none
+};
+
+// A part of the exact motion that the candidate's samples do not resolve
+// (docs/cross-checking.md, "What compare can and cannot see").
+struct UnresolvedPart {
+  enum class Kind {
+    phase,  // an exact phase longer than the stop-time tolerance holds no sample
+    event,  // the samples around an exact event are further apart than that tolerance
+  };
+  Kind kind = Kind::phase;
+  PhaseKind phase = PhaseKind::stick;  // the phase, or (event) the phase that begins there
+  double start = 0;                    // the phase's start, or the event's time [time]
+  double end = 0;                      // the phase's end, or the event's time [time]
+  double spacing = 0;                  // the distance between the samples around it [time]
 };
 
 // One verdict on one property.
@@ -166,13 +183,29 @@ struct ComparisonReport {
   double candidate_stops_per_period = 0;
 
   std::vector<Check> checks;  // in CheckKind order; displacement_max only with x
-  Verdict verdict = Verdict::pass;
-  std::vector<std::string> notes;  // remarks that are not checks (sampling, short record)
+
+  // Resolution: whether the samples can see every exact phase and event. The
+  // first 100 unresolved parts in time order, and how many there are of each.
+  std::vector<UnresolvedPart> unresolved;
+  std::size_t unresolved_phases = 0;
+  std::size_t unresolved_events = 0;
+  double resolving_step = 0;  // an archive step that resolves them all [time]; 0 if none needed
+
+  Verdict verdict = Verdict::pass;  // fail if a check failed; else inconclusive if anything
+                                    // is unresolved; else pass
+  std::vector<std::string> notes;   // remarks that are not checks (sampling, short record)
+
+  // What is unresolved, for people: counts and the first few parts, e.g.
+  // "2 exact phases hold no sample: slip+ [12.1, 12.4] (samples 5 apart), ...".
+  std::string resolution_text() const;
+  // "archive at most every 0.0314 (half the shortest ...)" or why no step can.
+  std::string resolution_advice() const;
 
   // Names of the failed checks, in order.
   std::vector<std::string> failed_checks() const;
   // One line per check, "<name>: PASS <message>" or "<name>: FAIL <message>", then
-  // "verdict: PASS" or "verdict: FAIL (checks a, b)".
+  // (when something is unresolved) "resolution: ...", then "verdict: PASS",
+  // "verdict: FAIL (checks a, b)" or "verdict: INCONCLUSIVE (...)".
   std::string brief_report() const;
   // Everything for people: candidate, model, scales, tolerances, errors, the stick
   // table (up to 50 rows), the regime, notes, then brief_report().

@@ -5,14 +5,18 @@
 #include <stdexcept>
 #include <string>
 
+#include "frictionref/comparison.hpp"
+
 namespace frictionref::cli {
 
-// Scripts depend on these values (docs/cli.md); never renumber them.
+// Scripts depend on these values (docs/cli.md); never renumber them. (Once:
+// 3 became INCONCLUSIVE and the internal error 4, as issue 13 set them.)
 enum ExitCode : int {
   exit_success = 0,
-  exit_compare_failed = 1,  // `compare`: the candidate failed a check (verdict FAIL)
+  exit_compare_failed = 1,  // `compare`, `report`: the candidate failed a check (verdict FAIL)
   exit_bad_input = 2,       // bad option, value or output path: fix the command line
-  exit_internal_error = 3,  // a broken engine invariant: please report
+  exit_inconclusive = 3,    // `compare`, `report`: the samples do not resolve the exact motion
+  exit_internal_error = 4,  // a broken engine invariant: please report
 };
 
 // what() is the message without the "frictionref: error: " prefix.
@@ -26,6 +30,19 @@ class CliError : public std::runtime_error {
 };
 
 inline CliError bad_input(const std::string& message) { return CliError(exit_bad_input, message); }
+
+// The exit code of a verdict: 0 PASS, 1 FAIL, 3 INCONCLUSIVE.
+inline ExitCode verdict_exit_code(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::pass:
+      return exit_success;
+    case Verdict::fail:
+      return exit_compare_failed;
+    case Verdict::inconclusive:
+      return exit_inconclusive;
+  }
+  return exit_internal_error;
+}
 
 inline CliError internal_error(const std::string& message) {
   return CliError(exit_internal_error, "internal error: " + message);

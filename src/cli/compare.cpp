@@ -98,8 +98,8 @@ Figure comparison_figure(const ComparisonReport& report, const TimeHistory& hist
   const std::string which = model.is_harmonic_coulomb()
                                 ? fmt::format("lambda = {}", number(model.lambda()))
                                 : model_title(model);
-  figure.title = fmt::format("frictionref compare: {} vs exact, {}: {}", candidate_name, which,
-                             verdict);
+  figure.title =
+      fmt::format("frictionref compare: {} vs exact, {}: {}", candidate_name, which, verdict);
   figure.panels = {std::move(velocity), std::move(difference)};
   return figure;
 }
@@ -119,6 +119,18 @@ nlohmann::ordered_json report_json(const ComparisonReport& r) {
   json out;
   out["verdict"] = std::string(to_string(r.verdict));
   out["failed_checks"] = r.failed_checks();
+  json parts = json::array();
+  for (const UnresolvedPart& p : r.unresolved)
+    parts.push_back({{"kind", p.kind == UnresolvedPart::Kind::phase ? "phase" : "event"},
+                     {"phase", std::string(to_string(p.phase))},
+                     {"start", p.start},
+                     {"end", p.end},
+                     {"spacing", p.spacing}});
+  out["resolution"] = {{"resolved", r.unresolved_phases + r.unresolved_events == 0},
+                       {"unresolved_phases", r.unresolved_phases},
+                       {"unresolved_events", r.unresolved_events},
+                       {"resolving_step", r.resolving_step},
+                       {"parts", parts}};
   json checks = json::array();
   for (const Check& check : r.checks)
     checks.push_back({{"name", std::string(check.name())},
@@ -224,7 +236,7 @@ ExitCode run_compare(const CompareCliOptions& options, const Invocation& invocat
                invocation.command_line, report.full_report());
   }
   out.commit();
-  return report.verdict == Verdict::pass ? exit_success : exit_compare_failed;
+  return verdict_exit_code(report.verdict);
 }
 
 }  // namespace
@@ -256,10 +268,17 @@ Command add_compare_command(CLI::App& app) {
       "Sticks and regime are read the same way from the exact motion at the candidate's times,\n"
       "so sampling affects both sides alike. The defaults pass a stiff friction spring\n"
       "(K_f = 1e7, as in the seed problem) and fail creeping, shifted or scaled velocities.\n"
-      "Output: a text report ending in one 'name: PASS|FAIL ...' line per check and\n"
-      "'verdict: PASS' or 'verdict: FAIL (checks ...)'; --json gives the same as one object.\n"
-      "Exit codes: 0 PASS, 1 FAIL, 2 bad input or bad file (one line on stderr naming the\n"
-      "file, line and column, no output), 3 internal error.\n"
+      "PASS needs the samples to resolve the exact motion: every exact phase longer than the\n"
+      "stop-time tolerance holds a sample, and the samples around every exact event are at\n"
+      "most that tolerance apart. Otherwise a run that passes every check is INCONCLUSIVE (a\n"
+      "defect between the samples would pass too), and the report names what is unresolved\n"
+      "and the archive step that would resolve it.\n"
+      "Output: a text report ending in one 'name: PASS|FAIL ...' line per check, a\n"
+      "'resolution: ...' line if something is unresolved, and 'verdict: PASS',\n"
+      "'verdict: FAIL (checks ...)' or 'verdict: INCONCLUSIVE (...)'; --json gives the same as\n"
+      "one object.\n"
+      "Exit codes: 0 PASS, 1 FAIL, 3 INCONCLUSIVE, 2 bad input or bad file (one line on stderr\n"
+      "naming the file, line and column, no output), 4 internal error.\n"
       "Examples:\n"
       "  frictionref compare --candidate run.csv --lambda 0.7\n"
       "  frictionref compare --candidate out.txt --mass 2 --amplitude 5 --omega 3 --friction 1.5 "

@@ -60,7 +60,7 @@ ExitCode run_report(const ReportCliOptions& options, const Invocation& invocatio
   if (std::fwrite(page.data(), 1, page.size(), out.stream()) != page.size())
     throw bad_input(describe_pending_output() + ": write failed");
   out.commit();
-  return report.verdict == Verdict::pass ? exit_success : exit_compare_failed;
+  return verdict_exit_code(report.verdict);
 }
 
 }  // namespace
@@ -88,9 +88,9 @@ Command add_report_command(CLI::App& app) {
       "              and events commands for the exact reference.\n"
       "The page has no script and loads nothing (no network, fonts or style sheets): it\n"
       "renders the same offline and prints.\n"
-      "Exit codes: 0 PASS, 1 FAIL (the report is written too), 2 bad input or bad file (one\n"
-      "line on stderr naming the option or the file, line and column; no output file),\n"
-      "3 internal error.\n"
+      "Exit codes: 0 PASS, 1 FAIL, 3 INCONCLUSIVE (the samples do not resolve the exact\n"
+      "motion; the report is written for all three), 2 bad input or bad file (one line on\n"
+      "stderr naming the option or the file, line and column; no output file), 4 internal error.\n"
       "Examples:\n"
       "  frictionref stiff --lambda 0.7 --t-end 30 -o stiff.csv\n"
       "  frictionref report --candidate stiff.csv --lambda 0.7 -o report.html\n"

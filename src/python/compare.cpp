@@ -33,6 +33,23 @@ py::dict report_dict(const ComparisonReport& r) {
   py::dict out;
   out["verdict"] = std::string(to_string(r.verdict));
   out["failed_checks"] = r.failed_checks();
+  py::list parts;
+  for (const UnresolvedPart& p : r.unresolved) {
+    py::dict part;
+    part["kind"] = p.kind == UnresolvedPart::Kind::phase ? "phase" : "event";
+    part["phase"] = std::string(to_string(p.phase));
+    part["start"] = p.start;
+    part["end"] = p.end;
+    part["spacing"] = p.spacing;
+    parts.append(part);
+  }
+  py::dict resolution;
+  resolution["resolved"] = r.unresolved_phases + r.unresolved_events == 0;
+  resolution["unresolved_phases"] = r.unresolved_phases;
+  resolution["unresolved_events"] = r.unresolved_events;
+  resolution["resolving_step"] = r.resolving_step;
+  resolution["parts"] = parts;
+  out["resolution"] = resolution;
   py::list checks;
   for (const Check& check : r.checks) {
     py::dict c;
@@ -198,8 +215,8 @@ py::dict compare_history(const PyModel& model, py::handle t_object, py::handle v
                    std::to_string(history.t.size()) + " rows)";
   naming(inputs, [&] { history.validate(); });
   if (history.t.front() < model.model.t0)
-    value_error("t[0] = " + number_text(history.t.front()) + ": is before --t0 = " +
-                inputs.at("t0").text +
+    value_error("t[0] = " + number_text(history.t.front()) +
+                ": is before --t0 = " + inputs.at("t0").text +
                 "; the exact motion starts at t0 (pass the candidate's start time as t0)");
   const ComparisonReport report = naming(inputs, [&] {
     py::gil_scoped_release release;
@@ -229,7 +246,8 @@ against the exact solution at those very times (the CLI's `compare`;
 docs/cross-checking.md). Needs amplitude B > 0.
 
 Returns the report as a dict with the keys of `compare --json`: verdict
-('PASS' or 'FAIL'), failed_checks, checks (name, passed, value, tolerance,
+('PASS', 'FAIL' or 'INCONCLUSIVE': every check passed but the samples do not
+resolve the exact motion, see resolution), failed_checks, checks (name, passed, value, tolerance,
 message), candidate, model, options, scales, velocity_error,
 displacement_error (None without x), sticks, creep, regime, notes, version,
 and report (the CLI's text report). Tolerances as the CLI's options, in

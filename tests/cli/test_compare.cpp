@@ -107,12 +107,41 @@ TEST(Compare, ExactCurvePassesWithExitZero) {
 
 TEST(Compare, CoarseExactCurveWithDisplacementPasses) {
   TempDir dir;
-  const fs::path curve = exact_curve(dir, "0.3", "0.1");
+  // 0.05 apart: below the default stop-time tolerance 0.01 periods = 0.0628.
+  const fs::path curve = exact_curve(dir, "0.3", "0.05");
   const RunResult result = run_frictionref(
       {"compare", "--candidate", curve.string(), "--lambda", "0.3", "--displacement-column", "x"});
   ASSERT_TRUE(succeeded(result)) << result.out;
   EXPECT_TRUE(contains(result.out, "\ndisplacement_max: PASS ")) << result.out;
   EXPECT_TRUE(contains(result.out, "\nverdict: PASS\n"));
+}
+
+// 0.1 apart: the exact curve itself passes every check, but events fall
+// between samples further apart than the stop-time tolerance: the samples
+// could hide a defect there, so the verdict is INCONCLUSIVE (exit 3), and the
+// report says what is unresolved and the archive step that resolves it.
+TEST(Compare, ExactCurveSampledTooCoarselyIsInconclusive) {
+  TempDir dir;
+  const fs::path curve = exact_curve(dir, "0.3", "0.1");
+  const RunResult result = run_frictionref(
+      {"compare", "--candidate", curve.string(), "--lambda", "0.3", "--displacement-column", "x"});
+  EXPECT_EQ(result.exit_code, 3) << result.out << result.err;
+  EXPECT_FALSE(contains(result.out, ": FAIL ")) << result.out;
+  EXPECT_TRUE(contains(result.out, "\nresolution: ")) << result.out;
+  EXPECT_TRUE(contains(result.out,
+                       "exact events lie between samples further apart than that "
+                       "tolerance 0.0628319: start of slip+ at t = 0.304693 (samples 0.1 "
+                       "apart), start of slip- at t = 4.42603"))
+      << result.out;
+  EXPECT_TRUE(contains(result.out,
+                       "\nverdict: INCONCLUSIVE (the samples do not resolve the exact motion: "
+                       "archive at most every 0.0314159 to resolve them)\n"))
+      << result.out;
+  const RunResult json =
+      run_frictionref({"compare", "--candidate", curve.string(), "--lambda", "0.3", "--json"});
+  EXPECT_EQ(json.exit_code, 3);
+  EXPECT_TRUE(contains(json.out, R"("verdict": "INCONCLUSIVE")")) << json.out;
+  EXPECT_TRUE(contains(json.out, R"("resolved": false)")) << json.out;
 }
 
 TEST(Compare, StiffSpringSeedCasesPass) {
@@ -408,7 +437,9 @@ TEST(Compare, HelpStatesDefaultsAndExitCodes) {
                            "--plot",
                            "--lambda",
                            "Exit codes",
-                           "0 PASS, 1 FAIL, 2 bad input",
+                           "0 PASS, 1 FAIL, 3 INCONCLUSIVE, 2 bad input",
+                           "4 internal error",
+                           "resolve the exact motion",
                            "Example"}) {
     EXPECT_TRUE(contains(result.out, part)) << part;
   }

@@ -62,3 +62,17 @@ def test_consistency_with_the_cli_json(cli, tmp_path):
     for check in got["checks"]:
         check.pop("message")
     assert got == expected
+
+
+def test_samples_that_cannot_see_the_motion_are_inconclusive():
+    # The mpmath closed form every 0.1: every check passes, but the events
+    # fall between samples further apart than the stop-time tolerance.
+    t = np.linspace(0, 30, 301)
+    x, v = exact_record(lambda s: dead_band_state(0.7, s), t)
+    report = frictionref.compare(frictionref.Model(lambda_=0.7), t, v, x)
+    assert report["failed_checks"] == []
+    assert report["verdict"] == "INCONCLUSIVE"
+    resolution = report["resolution"]
+    assert not resolution["resolved"] and resolution["unresolved_events"] > 0
+    assert resolution["resolving_step"] == 0.01 * 2 * np.pi / 2
+    assert "verdict: INCONCLUSIVE" in report["report"]

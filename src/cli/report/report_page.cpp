@@ -30,6 +30,7 @@ pre { background: #f5f5f5; border: 1px solid #ddd; padding: 0.6em; white-space: 
 .verdict { display: inline-block; font-size: 1.6em; font-weight: bold; padding: 0.15em 0.7em; color: #fff; }
 .PASS { background: #1a7f37; }
 .FAIL { background: #c62828; }
+.INCONCLUSIVE { background: #9a6700; }
 td.PASS, td.FAIL { color: #fff; font-weight: bold; }
 figure { margin: 1em 0; }
 figcaption { font-size: 0.92em; color: #444; max-width: 900px; }
@@ -168,6 +169,15 @@ void checks_section(HtmlWriter& html, const ComparisonReport& r) {
     html.text(" failed checks: " + list);
   }
   html.close("p");
+  if (r.unresolved_phases + r.unresolved_events > 0)
+    html.element("p",
+                 "Resolution: " + r.resolution_text() + ". " +
+                     std::string(r.verdict == Verdict::inconclusive
+                                     ? "Every check passed, but a defect there would pass "
+                                       "too: "
+                                     : "") +
+                     r.resolution_advice() + ".",
+                 {{"id", "resolution"}});
   html.open("table", {{"id", "check-table"}});
   header_row(html, {"check", "result", "value", "tolerance", "unit", "what was measured"});
   html.open("tbody");
