@@ -301,7 +301,7 @@ Command add_convergence_command(CLI::App& app) {
       "RMS velocity error, stop-time errors of the matched sticks, missed and extra stops. The\n"
       "observed order p (error ~ K_f^-p) is measured between neighbouring K_f values.\n"
       "Output: CSV (with '# ...' metadata) or a markdown table; see docs/validation.md.\n"
-      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
+      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 4 internal error.\n"
       "Example:\n"
       "  frictionref convergence --lambda 0.7 --format markdown --plot convergence.svg");
   return {command, [options](const Invocation& invocation) {

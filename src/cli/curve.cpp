@@ -125,7 +125,7 @@ Command add_curve_command(CLI::App& app) {
       "(t [time], x [length], v [length/time], a [length/time^2]). At a phase\n"
       "boundary the row carries the new phase and its acceleration (right limit); the row at T\n"
       "carries the last phase.\n"
-      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
+      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 4 internal error.\n"
       "Examples:\n"
       "  frictionref curve --lambda 0.7 --t-end 30 --dt 0.01 --include-events -o curve.csv\n"
       "  frictionref curve --friction 0.3 --t0 -5 --t-end 5 --dt 0.5");

@@ -100,7 +100,7 @@ Command add_events_command(CLI::App& app) {
       "last phase is cut at T. Streams: memory stays flat for any horizon.\n"
       "Output: '# ...' metadata lines, then phase,t_begin,t_end,x_begin,x_end,v_begin,v_end\n"
       "(t [time], x [length], v [length/time]); --summary: one line of key=value instead.\n"
-      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
+      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 4 internal error.\n"
       "Examples:\n"
       "  frictionref events --lambda 0.7 --t-end 30\n"
       "  frictionref events --mass 2 --amplitude 5 --omega 3 --friction 1.5 --v0 -1 --t-end 100 "

@@ -67,8 +67,10 @@ int run(int argc, char** argv) {
       "--friction R or --lambda L (R = L * B) is required.\n"
       "Output goes to stdout, or with -o FILE atomically to FILE; numbers are printed in the\n"
       "shortest form that reads back to the same double.\n"
-      "Exit codes: 0 success; 1 compare, report: verdict FAIL; 2 bad input or unwritable output\n"
-      "(one line on stderr naming the option, no output file); 3 internal error (please report).\n"
+      "Exit codes: 0 success; 1 compare, report: verdict FAIL; 3 compare, report: verdict\n"
+      "INCONCLUSIVE (the samples do not resolve the exact motion); 2 bad input or unwritable "
+      "output\n"
+      "(one line on stderr naming the option, no output file); 4 internal error (please report).\n"
       "Examples:\n"
       "  frictionref classify --lambda 0.7\n"
       "  frictionref events --lambda 0.3 --t-end 30 -o events.csv\n"
@@ -82,11 +84,10 @@ int run(int argc, char** argv) {
       "'frictionref <command> --help' explains each command; docs/cli.md has the formats.");
 
   const std::vector<Command> commands{
-      add_events_command(app),  add_curve_command(app),   add_reproduce_command(app),
-      add_classify_command(app), add_stiff_command(app),  add_compare_command(app),
-      add_report_command(app),
-      add_convergence_command(app), add_sweep_command(app),     add_map_command(app),
-      add_merge_command(app)};
+      add_events_command(app),   add_curve_command(app),       add_reproduce_command(app),
+      add_classify_command(app), add_stiff_command(app),       add_compare_command(app),
+      add_report_command(app),   add_convergence_command(app), add_sweep_command(app),
+      add_map_command(app),      add_merge_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& help_or_version) {
@@ -114,8 +115,8 @@ int main(int argc, char** argv) {
   } catch (const std::system_error& error) {
     // A write that failed mid-stream (disk full, I/O error): the output's
     // temporary file is already gone (unwound); say which output it was.
-    return report(exit_bad_input, describe_pending_output() + ": write failed: " +
-                                      error.code().message());
+    return report(exit_bad_input,
+                  describe_pending_output() + ": write failed: " + error.code().message());
   } catch (const frictionref::InvalidInput& error) {
     // Commands translate these to option names; this is the safety net.
     return report(exit_bad_input, error.what());

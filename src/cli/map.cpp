@@ -233,7 +233,7 @@ Command add_map_command(CLI::App& app) {
       "A progress line is shown on a terminal (stderr) when the run takes over a second.\n"
       "--shard I/N computes only the I-th of N contiguous blocks of the points (x outer), with\n"
       "a '# shard:' line; 'frictionref merge' joins the N files into the whole map's table.\n"
-      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
+      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 4 internal error.\n"
       "Examples:\n"
       "  frictionref map --x lambda:0:1.2:241 --y frequency-ratio:0.1:3:146 --stiffness 1 "
       "--periods 200 -o map.csv --plot map.png\n"

@@ -288,7 +288,7 @@ Command add_reproduce_command(CLI::App& app) {
       "velocities (velocity.svg/.png; for 10.3 also residual-velocity.svg/.png, the zoom after\n"
       "the stop). Prints one summary line per case and where the figures are.\n"
       "Takes no model options: the cases are fixed.\n"
-      "Exit codes: 0 ok, 2 bad input or unwritable DIR (one line on stderr), 3 internal error.\n"
+      "Exit codes: 0 ok, 2 bad input or unwritable DIR (one line on stderr), 4 internal error.\n"
       "Example:\n"
       "  frictionref reproduce --out results && head results/case-10.2-lambda-0.7/events.csv");
   return {command,

@@ -164,7 +164,7 @@ Command add_stiff_command(CLI::App& app) {
       "The row at T is interpolated between the two steps around it.\n"
       "Output: '# ...' metadata lines (including '# stiff: kf=... dt=... output_dt=...\n"
       "stability_limit=...'), then t,x,v (t [time], x [length], v [length/time]).\n"
-      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
+      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 4 internal error.\n"
       "Examples:\n"
       "  frictionref stiff --lambda 1.01 --v0 -1 --t-end 30 -o stiff.csv\n"
       "  frictionref stiff --lambda 0.7 --t-end 30 --kf 1e5 --dt 1e-4 --output-dt 0.01\n"

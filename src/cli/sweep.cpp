@@ -453,7 +453,7 @@ Command add_sweep_command(CLI::App& app) {
       "--shard I/N runs only the I-th of N contiguous blocks of the lambdas, with a '# shard:'\n"
       "line; 'frictionref merge' joins the N files into the whole sweep's table.\n"
       "A progress line is shown on a terminal (stderr) when the run takes over a second.\n"
-      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 3 internal error.\n"
+      "Exit codes: 0 ok, 2 bad input (one line on stderr, no file), 4 internal error.\n"
       "Examples:\n"
       "  frictionref sweep --lambda-from 0 --lambda-to 1.2 --points 1201 -o sweep.csv --plot "
       "sweep.svg\n"

@@ -28,7 +28,7 @@ py::dtype phase_dtype();
 py::dict summary_dict(const Summary& summary);
 
 // An engine that stopped on a broken invariant: RuntimeError, as the CLI's
-// exit code 3 ("internal error: ...").
+// exit code 4 ("internal error: ...").
 void require_no_failure(const Summary& summary);
 
 }  // namespace frictionref::python

@@ -25,7 +25,7 @@ TEST(Help, App) {
     ASSERT_TRUE(succeeded(result));
     for (const char* part : {"events", "curve", "reproduce", "classify", "stiff", "compare",
                              "convergence", "Exit codes",
-                             "2 bad input", "3 internal error", "--version", "Example"}) {
+                             "2 bad input", "3 compare, report: verdict", "INCONCLUSIVE", "4 internal error", "--version", "Example"}) {
       EXPECT_TRUE(contains(result.out, part)) << part;
     }
   }
