@@ -6,8 +6,8 @@
 // frictionref::InvalidInput, or returns a TimeHistory that passes validate()
 // and matches the options (x present iff a displacement column was asked
 // for). compare() on an accepted history either throws InvalidInput or
-// returns a report that is consistent (verdict = all checks passed, no NaN
-// measurement, the history's rows and times). Any other exception, a
+// returns a report that is consistent (verdict from the checks and the
+// resolution, no NaN measurement, the history's rows and times). Any other exception, a
 // sanitizer report or a hang is a finding.
 //
 // Input layout:
@@ -28,6 +28,7 @@
 // compare() runs only on histories of at most kMaxCompareRows rows with
 // times in [-kMaxCompareTime, kMaxCompareTime], so its exact engine stays
 // short (w = 1: at most ~16 forcing periods).
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -113,7 +114,22 @@ void check_report(const TimeHistory& history, const frictionref::ComparisonRepor
     FUZZ_CHECK_AT(!check.message.empty(), std::string(check.name()));
     all_passed = all_passed && check.passed;
   }
-  FUZZ_CHECK((report.verdict == frictionref::Verdict::pass) == all_passed);
+  // FAIL iff a check failed; otherwise INCONCLUSIVE iff the samples leave
+  // something unresolved.
+  const std::size_t unresolved = report.unresolved_phases + report.unresolved_events;
+  FUZZ_CHECK((report.verdict == frictionref::Verdict::fail) == !all_passed);
+  FUZZ_CHECK(report.verdict != frictionref::Verdict::inconclusive ||
+             (all_passed && unresolved > 0));
+  FUZZ_CHECK(report.verdict != frictionref::Verdict::pass || unresolved == 0);
+  FUZZ_CHECK(report.unresolved.size() == std::min<std::size_t>(unresolved, 100));
+  FUZZ_CHECK((unresolved > 0 && report.stop_time_margin > 0) == (report.resolving_step > 0));
+  double previous = report.t_first;
+  for (const frictionref::UnresolvedPart& part : report.unresolved) {
+    FUZZ_CHECK(part.start >= previous && part.start <= part.end && part.start < report.t_last);
+    FUZZ_CHECK(part.kind == frictionref::UnresolvedPart::Kind::phase ||
+               part.spacing > report.stop_time_margin);
+    previous = part.start;
+  }
   FUZZ_CHECK(report.failed_checks().empty() == all_passed);
   FUZZ_CHECK(!std::isnan(report.velocity_max_error) && !std::isnan(report.velocity_rms_error));
   FUZZ_CHECK(!std::isnan(report.displacement_max_error));
