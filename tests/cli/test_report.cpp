@@ -190,6 +190,27 @@ TEST(Report, ScaledVelocityFailsWithExitOneAndThePageWritten) {
     EXPECT_EQ(check_result(page, check), verdict) << check;
 }
 
+// The exact curve every 0.5: every check passes, but the samples resolve
+// nothing near the events: INCONCLUSIVE, exit 3, the page written and
+// saying what is unresolved, as compare says.
+TEST(Report, CoarseExactCurveIsInconclusiveWithExitThreeAndThePageWritten) {
+  TempDir dir;
+  const fs::path curve = dir.path() / "curve.csv";
+  ASSERT_TRUE(succeeded(run_frictionref(
+      {"curve", "--lambda", "0.7", "--t-end", "30", "--dt", "0.5", "-o", curve.string()})));
+  const RunResult result = run_frictionref(
+      {"report", "--candidate", curve.string(), "--lambda", "0.7", "-o", "report.html"},
+      dir.path());
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  const std::string page = read_file(dir.path() / "report.html");
+  EXPECT_TRUE(contains(page, "id=\"verdict\">INCONCLUSIVE<")) << page;
+  EXPECT_TRUE(contains(page, "<p id=\"resolution\">Resolution: ")) << page;
+  EXPECT_TRUE(contains(page, "archive at most every 0.0314159 to resolve them.")) << page;
+  const RunResult compared =
+      run_frictionref({"compare", "--candidate", curve.string(), "--lambda", "0.7"});
+  EXPECT_EQ(compared.exit_code, 3);
+}
+
 // compare's default tolerances (docs/cli.md, compare), in each check's unit.
 const std::map<std::string, std::string> default_tolerance = {
     {"velocity_max", "0.02"}, {"velocity_rms", "0.01"}, {"displacement_max", "0.02"},
