@@ -247,6 +247,7 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
   r.model = model;
   r.options = options;
   r.source = history.source;
+  r.notes = history.notes;  // what the reader did (title lines, restarts)
   r.rows = history.rows();
   r.t_first = history.t.front();
   r.t_last = history.t.back();

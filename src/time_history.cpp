@@ -1,9 +1,13 @@
 // Reading another code's time history (time_history.hpp).
 //
 // One pass over the lines, never holding the file: comments and blank lines
-// are skipped; the first content line fixes the separator and the number of
-// columns, and is the header if none of its fields is a number; every later
-// content line is a row with exactly that many fields.
+// are skipped; the table's first row is the first content line with two
+// numbers or more, which fixes the separator and the number of columns; if
+// the line before it splits into as many fields, none a number, it is the
+// header, and the content lines before it are title lines, skipped with a
+// note. Otherwise (no header, or no such row among the first
+// kMaxLeadingLines) the first content line starts the table, as it always
+// did. Every later content line is a row with exactly that many fields.
 #include "frictionref/time_history.hpp"
 
 #include <cctype>
@@ -11,13 +15,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string_view>
 
-#include "frictionref/error.hpp"
 #include "frictionref/detail/number_text.hpp"
+#include "frictionref/error.hpp"
 
 namespace frictionref {
 namespace {
@@ -109,9 +114,19 @@ void split(std::string_view line, Separator separator, std::vector<std::string>&
   }
 }
 
-// The whole field as a double (strtod, or a Fortran 'D' exponent).
-bool to_number(const std::string& field, double& value) {
+// Content lines held while looking for the table's first row.
+constexpr std::size_t kMaxLeadingLines = 64;
+
+// The whole field as a double (strtod, or a Fortran 'D' exponent); with
+// `decimal_comma` one ',' is the decimal point ("1,5").
+bool to_number(const std::string& field, double& value, bool decimal_comma = false) {
   if (field.empty()) return false;
+  if (decimal_comma && field.find(',') != std::string::npos) {
+    if (field.find('.') != std::string::npos || field.find(',') != field.rfind(',')) return false;
+    std::string point = field;
+    point[point.find(',')] = '.';
+    return to_number(point, value, false);
+  }
   char* end = nullptr;
   value = std::strtod(field.c_str(), &end);
   if (end == field.c_str() + field.size()) return true;
@@ -125,11 +140,24 @@ bool to_number(const std::string& field, double& value) {
          std::isdigit(static_cast<unsigned char>(field[d - 1])) != 0;
 }
 
-bool any_number(const std::vector<std::string>& fields) {
+std::size_t count_numbers(const std::vector<std::string>& fields, bool decimal_comma) {
   double ignored = 0;
+  std::size_t count = 0;
   for (const std::string& field : fields)
-    if (to_number(field, ignored)) return true;
-  return false;
+    if (to_number(field, ignored, decimal_comma)) ++count;
+  return count;
+}
+
+bool any_number(const std::vector<std::string>& fields, bool decimal_comma = false) {
+  return count_numbers(fields, decimal_comma) > 0;
+}
+
+// The separator of a content line: ';' if there is one (then numbers may
+// have a decimal comma), else ',' unless commas are decimal points, else blanks.
+Separator separator_of(std::string_view line, bool decimal_comma) {
+  if (line.find(';') != std::string_view::npos) return Separator::semicolon;
+  if (!decimal_comma && line.find(',') != std::string_view::npos) return Separator::comma;
+  return Separator::blanks;
 }
 
 // A header name as compared: lower case; and without a trailing unit in
@@ -139,6 +167,22 @@ std::string without_unit(const std::string& name) {
   const std::size_t open = base.find_first_of("[(");
   if (open != std::string::npos && open > 0) base = std::string(trim(base.substr(0, open)));
   return base;
+}
+
+// ... and without a unit suffix after '_' or '-' ("time_s" -> "time",
+// "v_mps" -> "v", "x-m" -> "x").
+std::string without_suffix(const std::string& name) {
+  const std::string base = without_unit(name);
+  const std::size_t cut = base.find_first_of("_-");
+  if (cut == std::string::npos || cut == 0) return base;
+  return std::string(trim(base.substr(0, cut)));
+}
+
+// The three ways a header name answers to a wanted name, strictest first.
+std::string header_key(const std::string& name, int level) {
+  if (level == 0) return lower(name);
+  if (level == 1) return lower(without_unit(name));
+  return lower(without_suffix(name));
 }
 
 bool only_digits(const std::string& s) {
@@ -163,8 +207,12 @@ class Reader {
   TimeHistory read();
 
  private:
-  // The next content line (comments and blanks removed), false at the end.
+  // The next content line (comments and blanks removed), false at the end;
+  // held lines first.
   bool next_line(std::string_view& content);
+  // Skips skip_rows lines, then finds the table's first row and header
+  // (skipping title lines with a note); leaves the first row next to read.
+  void find_table();
   std::size_t resolve(const std::string& spec, const char* field, const char* const* names,
                       std::size_t default_number, const char* default_text) const;
   std::string column_label(std::size_t index) const;
@@ -180,24 +228,90 @@ class Reader {
   std::string name_;
   TimeHistoryReadOptions options_;
   std::string raw_;
-  std::size_t line_number_ = 0;
-  bool any_text_ = false;  // a non-blank byte was seen
+  std::size_t line_number_ = 0;  // of the current line
+  std::size_t stream_line_ = 0;  // lines taken from the stream
+  bool any_text_ = false;        // a non-blank byte was seen
   Separator separator_ = Separator::comma;
   std::size_t columns_ = 0;
   std::size_t first_line_ = 0;  // line of the first content line
   std::optional<std::vector<std::string>> header_;
+  bool decimal_comma_ = false;
+  struct Held {
+    std::string content;
+    std::size_t line;
+  };
+  std::deque<Held> held_;  // content lines read ahead, to be read again
+  std::vector<std::string> notes_;
 };
 
 bool Reader::next_line(std::string_view& content) {
+  if (!held_.empty()) {
+    raw_ = std::move(held_.front().content);
+    line_number_ = held_.front().line;
+    held_.pop_front();
+    content = raw_;
+    return true;
+  }
   while (std::getline(in_, raw_)) {
-    ++line_number_;
+    line_number_ = ++stream_line_;
     std::string_view line = raw_;
-    if (line_number_ == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
+    if (stream_line_ == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
     if (!trim(line).empty()) any_text_ = true;
     content = trim(strip_comment(line));
     if (!content.empty()) return true;
   }
   return false;
+}
+
+std::string lines_text(std::size_t first, std::size_t last) {
+  return first == last ? "line " + std::to_string(first)
+                       : "lines " + std::to_string(first) + "-" + std::to_string(last);
+}
+
+void Reader::find_table() {
+  std::string_view content;
+  std::size_t first_skipped = 0;
+  for (std::size_t i = 0; i < options_.skip_rows; ++i) {
+    if (!next_line(content))
+      throw InvalidInput("skip_rows", std::to_string(options_.skip_rows),
+                         name_ + " has only " + std::to_string(i) +
+                             " lines that are not comments or blank; nothing is left to read");
+    if (i == 0) first_skipped = line_number_;
+  }
+  if (options_.skip_rows > 0)
+    notes_.push_back("skipped " + std::to_string(options_.skip_rows) + " line" +
+                     (options_.skip_rows > 1 ? "s" : "") + " before the table as asked (" +
+                     lines_text(first_skipped, line_number_) + ")");
+  // Read ahead to the first line with two numbers: the table's first row.
+  std::vector<Held> ahead;
+  std::vector<std::string> fields, header;
+  while (ahead.size() < kMaxLeadingLines && next_line(content)) {
+    ahead.push_back({std::string(content), line_number_});
+    const Separator separator = separator_of(content, options_.decimal_comma);
+    const bool decimal = options_.decimal_comma || separator == Separator::semicolon;
+    split(content, separator, fields);
+    if (fields.size() < 2 || count_numbers(fields, decimal) < 2) continue;
+    // Lines before the header are title lines; without a header nothing is
+    // skipped (a line before the first row is then a bad row, and says so).
+    std::size_t start = ahead.size() - 1;
+    if (start > 0) {
+      split(ahead[start - 1].content, separator, header);
+      if (header.size() == fields.size() && !any_number(header, decimal))
+        --start;
+      else
+        start = 0;
+    }
+    if (start > 0)
+      notes_.push_back("skipped " + std::to_string(start) + " title line" + (start > 1 ? "s" : "") +
+                       " before the table (" +
+                       lines_text(ahead.front().line, ahead[start - 1].line) + ": '" +
+                       snippet(ahead.front().content) + "'" + (start > 1 ? ", ..." : "") + ")");
+    held_.assign(ahead.begin() + static_cast<std::ptrdiff_t>(start), ahead.end());
+    return;
+  }
+  // No row with two numbers within reach: the first content line starts the
+  // table, as it always did, and its errors say what is wrong.
+  held_.assign(ahead.begin(), ahead.end());
 }
 
 std::string Reader::column_label(std::size_t index) const {
@@ -221,12 +335,10 @@ std::size_t Reader::resolve(const std::string& spec, const char* field, const ch
       header_ ? "the header of " + name_ + " (line " + std::to_string(first_line_) + ")" : name_;
   if (spec.empty()) {
     if (!header_) return default_number - 1;
-    for (const char* const* name = names; *name; ++name) {
-      for (std::size_t i = 0; i < columns_; ++i)
-        if (lower((*header_)[i]) == *name) return i;
-      for (std::size_t i = 0; i < columns_; ++i)
-        if (lower(without_unit((*header_)[i])) == *name) return i;
-    }
+    for (int level = 0; level < 3; ++level)
+      for (const char* const* name = names; *name; ++name)
+        for (std::size_t i = 0; i < columns_; ++i)
+          if (header_key((*header_)[i], level) == *name) return i;
     throw InvalidInput(field, std::string("(default: ") + default_text + ")",
                        where + " has no such column (its columns: " + header_names() +
                            "); name the column or give its number");
@@ -245,11 +357,9 @@ std::size_t Reader::resolve(const std::string& spec, const char* field, const ch
                            std::to_string(first_line_) + " is numbers); give the column's number");
   const std::string wanted = lower(trim(spec));
   std::vector<std::size_t> found;
-  for (std::size_t i = 0; i < columns_; ++i)
-    if (lower((*header_)[i]) == wanted) found.push_back(i);
-  if (found.empty())
+  for (int level = 0; level < 3 && found.empty(); ++level)
     for (std::size_t i = 0; i < columns_; ++i)
-      if (lower(without_unit((*header_)[i])) == wanted) found.push_back(i);
+      if (header_key((*header_)[i], level) == wanted) found.push_back(i);
   if (found.empty())
     throw InvalidInput(field, spec,
                        "no such column in " + where + " (its columns: " + header_names() + ")");
@@ -262,14 +372,18 @@ std::size_t Reader::resolve(const std::string& spec, const char* field, const ch
 }
 
 void Reader::require_some_number(const std::vector<std::string>& first_row) {
-  if (any_number(first_row)) return;
+  if (any_number(first_row, decimal_comma_)) return;
   // Neither the header nor the first row has a number: is there any at all?
   // (Reads on with its own buffer: the first row stays as it is.)
   std::string line;
   std::vector<std::string> fields;
+  for (const Held& held : held_) {
+    split(held.content, separator_, fields);
+    if (any_number(fields, decimal_comma_)) return;
+  }
   while (std::getline(in_, line)) {
     split(trim(strip_comment(line)), separator_, fields);
-    if (any_number(fields)) return;
+    if (any_number(fields, decimal_comma_)) return;
   }
   throw InvalidInput("file", name_,
                      "contains no numbers (a time history needs rows of numbers: time, "
@@ -277,6 +391,7 @@ void Reader::require_some_number(const std::vector<std::string>& first_row) {
 }
 
 TimeHistory Reader::read() {
+  find_table();
   std::string_view content;
   if (!next_line(content)) {
     if (in_.bad()) throw InvalidInput("file", name_, "cannot be read (input error)");
@@ -284,9 +399,8 @@ TimeHistory Reader::read() {
                        any_text_ ? "has no data rows (only comments and blank lines)" : "is empty");
   }
   first_line_ = line_number_;
-  separator_ = content.find(',') != std::string_view::npos   ? Separator::comma
-               : content.find(';') != std::string_view::npos ? Separator::semicolon
-                                                             : Separator::blanks;
+  separator_ = separator_of(content, options_.decimal_comma);
+  decimal_comma_ = options_.decimal_comma || separator_ == Separator::semicolon;
   std::vector<std::string> fields;
   split(content, separator_, fields);
   columns_ = fields.size();
@@ -294,7 +408,7 @@ TimeHistory Reader::read() {
     throw InvalidInput(location(line_number_), snippet(content),
                        "has 1 column; a time history needs at least 2 (time and velocity), "
                        "separated by commas, semicolons, spaces or tabs");
-  const bool first_is_header = !any_number(fields);
+  const bool first_is_header = !any_number(fields, decimal_comma_);
   bool have_row = true;
   if (first_is_header) {
     header_ = fields;
@@ -325,6 +439,7 @@ TimeHistory Reader::read() {
 
   TimeHistory history;
   if (displacement) history.x.emplace();
+  std::size_t restarts = 0;
   std::size_t first_row_line = 0;
   std::size_t previous_line = 0;
   bool split_already = true;  // the first row was split above
@@ -341,7 +456,7 @@ TimeHistory Reader::read() {
                              "); every row needs the same number");
     const auto value = [&](std::size_t column) {
       double number = 0;
-      if (!to_number(fields[column], number))
+      if (!to_number(fields[column], number, decimal_comma_))
         throw InvalidInput(location(line_number_, column),
                            fields[column].empty() ? "(empty)" : fields[column], "must be a number");
       if (!std::isfinite(number))
@@ -350,10 +465,31 @@ TimeHistory Reader::read() {
       return number;
     };
     const double t = value(time);
-    if (!history.t.empty() && t < history.t.back())
-      throw InvalidInput(location(line_number_, time), fields[time],
-                         "must be >= the time on line " + std::to_string(previous_line) + " (" +
-                             text(history.t.back()) + "): times must not decrease");
+    if (!history.t.empty() && t < history.t.back()) {
+      if (options_.on_overlap == TimeHistoryReadOptions::OnOverlap::error)
+        throw InvalidInput(
+            location(line_number_, time), fields[time],
+            "must be >= the time on line " + std::to_string(previous_line) + " (" +
+                text(history.t.back()) +
+                "): times must not decrease; if the run restarted from a checkpoint and "
+                "wrote the overlap again, --on-overlap keep-last (on_overlap = "
+                "keep_last) keeps the later segment");
+      // A restart: the later segment counts from its first time on.
+      const double from = history.t.back();
+      std::size_t dropped = 0;
+      while (!history.t.empty() && history.t.back() >= t) {
+        history.t.pop_back();
+        history.v.pop_back();
+        if (history.x) history.x->pop_back();
+        ++dropped;
+      }
+      ++restarts;
+      if (restarts <= 5)
+        notes_.push_back("time went back at line " + std::to_string(line_number_) + " (from " +
+                         text(from) + " to " + text(t) + "): kept the later segment, dropped the " +
+                         std::to_string(dropped) + " earlier row" + (dropped > 1 ? "s" : "") +
+                         " at or after " + text(t));
+    }
     history.t.push_back(t);
     history.v.push_back(value(velocity));
     if (displacement) history.x->push_back(value(*displacement));
@@ -375,6 +511,10 @@ TimeHistory Reader::read() {
                        "every row has the same time " + text(history.t.front()) + " (" +
                            column_label(time) + "); the times must span an interval");
 
+  if (restarts > 5)
+    notes_.push_back("time went back " + std::to_string(restarts) +
+                     " times in all; each time the later segment was kept");
+  history.notes = notes_;
   history.source = name_ + " [time: " + column_label(time) +
                    ", velocity: " + column_label(velocity) +
                    (displacement ? ", displacement: " + column_label(*displacement) : "") + "; " +

@@ -148,6 +148,95 @@ TEST(TimeHistoryRead, ReadsAFileByPath) {
 // ---------------------------------------------------------------------------
 // Bad files: file, line, column and rule.
 
+// ---------------------------------------------------------------------------
+// Files real codes write (issue 13): spreadsheet exports with ';' and decimal
+// commas, headers with unit suffixes, title lines without '#', restarts.
+
+TEST(TimeHistoryRead, SemicolonsWithDecimalCommas) {
+  const TimeHistory h = parse("t;v;x\n0;0;1,5\n0,5;-0,25;2\n1;1e-3;-3,125\n", columns("", "", "x"));
+  EXPECT_EQ(h.t, (std::vector<double>{0, 0.5, 1}));
+  EXPECT_EQ(h.v, (std::vector<double>{0, -0.25, 1e-3}));
+  EXPECT_EQ(*h.x, (std::vector<double>{1.5, 2, -3.125}));
+  // Two commas, or a comma beside a point, is not a number.
+  EXPECT_TRUE(contains(refused("t;v\n0;1,2,3\n1;1\n").rule(), "must be a number"));
+  EXPECT_TRUE(contains(refused("t;v\n0;1.2,3\n1;1\n").rule(), "must be a number"));
+}
+
+TEST(TimeHistoryRead, DecimalCommaOptionBetweenBlanks) {
+  TimeHistoryReadOptions options;
+  options.decimal_comma = true;
+  const TimeHistory h = parse("t v\n0 0,5\n1,25 -2\n", options);
+  EXPECT_EQ(h.t, (std::vector<double>{0, 1.25}));
+  EXPECT_EQ(h.v, (std::vector<double>{0.5, -2}));
+  // Without the option the comma separates: "0 0,5" is one field "0 0" and "5".
+  EXPECT_NO_THROW(parse("t,v\n0,0.5\n1.25,-2\n"));
+}
+
+TEST(TimeHistoryRead, HeaderNamesWithUnitSuffixes) {
+  const TimeHistory h = parse("time_s,x_m,v_mps\n0,1,2\n1,3,4\n", columns("", "", "x"));
+  EXPECT_EQ(h.t, (std::vector<double>{0, 1}));
+  EXPECT_EQ(h.v, (std::vector<double>{2, 4}));
+  EXPECT_EQ(*h.x, (std::vector<double>{1, 3}));
+  const TimeHistory named =
+      parse("T-s;Disp-mm;Velocity (m/s)\n0;1;2\n1;3;4\n", columns("t", "velocity", "disp"));
+  EXPECT_EQ(named.v, (std::vector<double>{2, 4}));
+  EXPECT_EQ(*named.x, (std::vector<double>{1, 3}));
+  // An exact name wins over a suffix match: "v" is column 2, not "v_old".
+  EXPECT_EQ(parse("t,v,v_old\n0,1,9\n1,2,9\n").v, (std::vector<double>{1, 2}));
+}
+
+TEST(TimeHistoryRead, TitleLinesBeforeTheHeaderAreSkippedWithANote) {
+  const TimeHistory h =
+      parse("FRICTION MODEL RUN 42\nsolver: explicit\ntime_s,v_mps\n0,0\n1,0.5\n");
+  EXPECT_EQ(h.t, (std::vector<double>{0, 1}));
+  ASSERT_EQ(h.notes.size(), 1u);
+  EXPECT_EQ(h.notes[0],
+            "skipped 2 title lines before the table (lines 1-2: 'FRICTION MODEL RUN 42', ...)");
+  EXPECT_TRUE(contains(h.source, "time: column 1 (time_s)")) << h.source;
+  // Without a header nothing is skipped: a line before the first row is a
+  // bad row (here the header of another table shape), and is named.
+  EXPECT_EQ(refused("Run 7\n0 0\n1 2\n").parameter(), "run.csv:1 column 1");
+  EXPECT_EQ(refused("t;v\n0;1,2,3\n1;1\n").parameter(), "run.csv:2 column 2 (v)");
+  // A plain file has no note.
+  EXPECT_TRUE(parse("t,v\n0,0\n1,1\n").notes.empty());
+}
+
+TEST(TimeHistoryRead, SkipRowsSkipsLinesBeforeTheTable) {
+  TimeHistoryReadOptions options;
+  options.skip_rows = 2;
+  // The second skipped line has numbers: only --skip-rows can say it is not a row.
+  const TimeHistory h = parse("# comment\nSOLVER X\n3 4 5\nt v\n0 0\n1 1\n", options);
+  EXPECT_EQ(h.t, (std::vector<double>{0, 1}));
+  ASSERT_FALSE(h.notes.empty());
+  EXPECT_EQ(h.notes[0], "skipped 2 lines before the table as asked (lines 2-3)");
+  options.skip_rows = 9;
+  const InvalidInput error = refused("t v\n0 0\n1 1\n", options);
+  EXPECT_EQ(error.parameter(), "skip_rows");
+  EXPECT_TRUE(contains(error.rule(), "has only 3 lines that are not comments or blank"));
+}
+
+TEST(TimeHistoryRead, RestartKeepsTheLaterSegmentWhenAsked) {
+  const std::string file = "t,v,x\n0,0,0\n1,1,1\n2,2,2\n3,3,3\n1.5,5,5\n2.5,6,6\n4,7,7\n";
+  // By default: an error naming the option.
+  const InvalidInput error = refused(file, columns("", "", "x"));
+  EXPECT_TRUE(contains(error.rule(), "times must not decrease")) << error.rule();
+  EXPECT_TRUE(contains(error.rule(), "--on-overlap keep-last")) << error.rule();
+  TimeHistoryReadOptions options = columns("", "", "x");
+  options.on_overlap = TimeHistoryReadOptions::OnOverlap::keep_last;
+  const TimeHistory h = parse(file, options);
+  EXPECT_EQ(h.t, (std::vector<double>{0, 1, 1.5, 2.5, 4}));
+  EXPECT_EQ(h.v, (std::vector<double>{0, 1, 5, 6, 7}));
+  EXPECT_EQ(*h.x, (std::vector<double>{0, 1, 5, 6, 7}));
+  ASSERT_EQ(h.notes.size(), 1u);
+  EXPECT_EQ(h.notes[0],
+            "time went back at line 6 (from 3 to 1.5): kept the later segment, dropped the 2 "
+            "earlier rows at or after 1.5");
+  // A restart to before the first row keeps only the later segment.
+  TimeHistoryReadOptions keep;
+  keep.on_overlap = TimeHistoryReadOptions::OnOverlap::keep_last;
+  EXPECT_EQ(parse("t,v\n5,0\n6,1\n0,2\n1,3\n", keep).t, (std::vector<double>{0, 1}));
+}
+
 TEST(TimeHistoryBad, UnreadableFileAndDirectory) {
   InvalidInput e = expect_invalid([] { read_time_history("/nonexistent/run.csv"); });
   EXPECT_EQ(e.parameter(), "file");

@@ -26,6 +26,8 @@ struct TimeHistory {
   std::vector<double> v;                 // velocity at each time [length/time]; finite
   std::optional<std::vector<double>> x;  // position at each time [length], if one was read
   std::string source;  // where it came from, for reports: file, columns used, rows, lines
+  std::vector<std::string> notes;  // what the reader did that a reader of the report should
+                                   // know: title lines skipped, restarts resolved
 
   std::size_t rows() const { return t.size(); }
 
@@ -35,21 +37,43 @@ struct TimeHistory {
   void validate() const;
 };
 
-// Which columns hold what. A column is named by its header text (compared
-// case-insensitively, quotes and surrounding blanks removed; "time [s]" or
-// "v (m/s)" also answer to "time" and "v") or by its 1-based number; text made
-// only of digits is always a number.
+// Which columns hold what, and how the file is spelled. A column is named by
+// its header text (compared case-insensitively, quotes and surrounding blanks
+// removed; "time [s]" or "v (m/s)" also answer to "time" and "v", and a unit
+// suffix after '_' or '-' too: "time_s", "v_mps", "x-m") or by its 1-based
+// number; text made only of digits is always a number.
 struct TimeHistoryReadOptions {
-  std::string time_column;          // "" = the header's "t" or "time", else column 1
-  std::string velocity_column;      // "" = the header's "v", "vel" or "velocity", else column 2
+  std::string time_column;          // "" = the header's t or time, else column 1
+  std::string velocity_column;      // "" = the header's v, vel or velocity, else column 2
   std::string displacement_column;  // "" = none read; else a name or number as above
+
+  // Numbers with a decimal comma ("1,5"). Always so when the columns are
+  // separated by ';' (the spreadsheet export of comma-decimal locales);
+  // with this set also between blanks (then ',' never separates columns).
+  bool decimal_comma = false;
+
+  // Lines to skip before the table (header or first row), on top of the
+  // comments and blank lines. Without it, text lines before the header (a
+  // title without '#') are skipped anyway when the table's shape shows them:
+  // see read_time_history.
+  std::size_t skip_rows = 0;
+
+  // When time goes back (a restart from a checkpoint writes the overlap
+  // again): error (the default: a clear message naming keep-last), or
+  // keep_last: the later segment counts, earlier rows at or after its first
+  // time are dropped, and a note says so.
+  enum class OnOverlap { error, keep_last };
+  OnOverlap on_overlap = OnOverlap::error;
 
   // Throws InvalidInput naming the field (e.g. "time_column") if a number is 0
   // or the text is only blanks.
   void validate() const;
 };
 
-// Reads `path` ("-" reads standard input). Throws InvalidInput: parameter
+// Reads `path` ("-" reads standard input). The table's first row is the
+// first line with at least two numbers; when the line before it has as many
+// fields and no number, it is the header, and content lines before the
+// header are title lines, skipped with a note. Throws InvalidInput: parameter
 // "file" for a file that cannot be read, is empty or has no data rows;
 // "<path>:<line>" or "<path>:<line> column <n> (<name>)" for a bad line or
 // value; "time_column" / "velocity_column" / "displacement_column" for a

@@ -22,6 +22,7 @@ const std::map<std::string, std::string> renamed = {
     {"time_column", "--time-column"},
     {"velocity_column", "--velocity-column"},
     {"displacement_column", "--displacement-column"},
+    {"skip_rows", "--skip-rows"},
 };
 
 // A count as typed: digits only.
@@ -72,6 +73,24 @@ void CompareInputs::add_to(CLI::App& command, ModelOptions& model) {
                   "displacement column; adds the displacement_max check [default: none]")
       ->type_name("C")
       ->group(columns);
+  command
+      .add_flag("--decimal-comma", decimal_comma,
+                "numbers have a decimal comma (1,5) [always so with ';' between columns]")
+      ->group(columns);
+  command
+      .add_option("--skip-rows", skip_rows,
+                  "skip N lines before the header or first row [default: 0; title lines before "
+                  "a header are skipped anyway, with a note]")
+      ->type_name("N")
+      ->group(columns)
+      ->capture_default_str();
+  command
+      .add_option("--on-overlap", on_overlap,
+                  "when time goes back (a restart wrote the overlap again): error, or keep-last "
+                  "(the later segment counts, with a note)")
+      ->type_name("MODE")
+      ->group(columns)
+      ->capture_default_str();
 
   const char* checks =
       "Checks (relative to the model: velocities in B/(m w), displacements in B/(m w^2), times "
@@ -156,6 +175,12 @@ PreparedComparison prepare_comparison(const CompareInputs& typed, const ModelOpt
   prepared.read_options.time_column = typed.time_column;
   prepared.read_options.velocity_column = typed.velocity_column;
   prepared.read_options.displacement_column = typed.displacement_column;
+  prepared.read_options.decimal_comma = typed.decimal_comma;
+  prepared.read_options.skip_rows = parse_count({"--skip-rows", typed.skip_rows});
+  if (typed.on_overlap == "keep-last")
+    prepared.read_options.on_overlap = TimeHistoryReadOptions::OnOverlap::keep_last;
+  else if (typed.on_overlap != "error")
+    throw bad_input(fmt::format("--on-overlap = {}: must be error or keep-last", typed.on_overlap));
   translating(inputs, [&] { prepared.read_options.validate(); });
   return prepared;
 }

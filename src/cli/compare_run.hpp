@@ -26,6 +26,9 @@ struct CompareInputs {
   std::string time_column;
   std::string velocity_column;
   std::string displacement_column;
+  bool decimal_comma = false;
+  std::string skip_rows = "0";
+  std::string on_overlap = "error";
   // Tolerances as typed (numbers are parsed by parse_number, see model_options.hpp).
   std::string stick_threshold;
   std::string min_stick_duration;

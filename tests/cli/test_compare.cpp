@@ -164,6 +164,86 @@ TEST(Compare, StiffSpringSeedCasesPass) {
   }
 }
 
+// The exact curve rewritten in the shapes real codes write (issue 13): a
+// title line without '#', a header with unit suffixes, ';' between columns
+// and decimal commas; and a restart that writes the overlap again.
+std::string exact_rows(const fs::path& curve, const char* separator, bool decimal_comma,
+                       double from = 0, double to = 1e300) {
+  std::string text;
+  const Csv exact = parse_csv(read_file(curve));
+  for (const auto& row : exact.rows) {
+    const double t = to_double(row.at(exact.column("t")));
+    if (t < from || t > to) continue;
+    std::string line = row.at(exact.column("t")) + separator + row.at(exact.column("x")) +
+                       separator + row.at(exact.column("v"));
+    if (decimal_comma)
+      for (char& c : line)
+        if (c == '.') c = ',';
+    text += line + "\n";
+  }
+  return text;
+}
+
+TEST(Compare, SpreadsheetExportWithTitleUnitsAndDecimalCommasPasses) {
+  TempDir dir;
+  const fs::path curve = exact_curve(dir);
+  const fs::path file = dir.path() / "run42.csv";
+  write_text(file, "FRICTION MODEL RUN 42\ntime_s;x_m;v_mps\n" + exact_rows(curve, ";", true));
+  const RunResult result = run_frictionref(
+      {"compare", "--candidate", file.string(), "--lambda", "0.7", "--displacement-column", "x"});
+  EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
+  EXPECT_TRUE(contains(result.out,
+                       "time: column 1 (time_s), velocity: column 3 (v_mps), "
+                       "displacement: column 2 (x_m)"))
+      << result.out;
+  EXPECT_TRUE(contains(result.out,
+                       "\nnote: skipped 1 title line before the table (line 1: "
+                       "'FRICTION MODEL RUN 42')\n"))
+      << result.out;
+  EXPECT_TRUE(contains(result.out, "\nverdict: PASS\n"));
+  // Blanks with decimal commas need --decimal-comma.
+  const fs::path blanks = dir.path() / "blanks.txt";
+  write_text(blanks, exact_rows(curve, " ", true));
+  EXPECT_EQ(run_frictionref({"compare", "--candidate", blanks.string(), "--lambda", "0.7",
+                             "--velocity-column", "3", "--decimal-comma"})
+                .exit_code,
+            0);
+  // --skip-rows N skips lines the reader cannot tell from rows.
+  const fs::path numbered = dir.path() / "numbered.csv";
+  write_text(numbered, "RUN 42 OF 50\nt,x,v\n" + exact_rows(curve, ",", false));
+  EXPECT_EQ(run_frictionref({"compare", "--candidate", numbered.string(), "--lambda", "0.7",
+                             "--skip-rows", "1"})
+                .exit_code,
+            0);
+}
+
+TEST(Compare, RestartIsAnErrorNamingKeepLastWhichKeepsTheLaterSegment) {
+  TempDir dir;
+  const fs::path curve = exact_curve(dir);
+  const fs::path file = dir.path() / "restarted.csv";
+  // Written up to t = 20, restarted from a checkpoint at t = 15.
+  write_text(file,
+             "t,x,v\n" + exact_rows(curve, ",", false, 0, 20) + exact_rows(curve, ",", false, 15));
+  const RunResult refused =
+      run_frictionref({"compare", "--candidate", file.string(), "--lambda", "0.7"});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_TRUE(refused.out.empty());
+  EXPECT_TRUE(contains(refused.err, "must not decrease")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "--on-overlap keep-last")) << refused.err;
+  const RunResult kept = run_frictionref(
+      {"compare", "--candidate", file.string(), "--lambda", "0.7", "--on-overlap", "keep-last"});
+  EXPECT_EQ(kept.exit_code, 0) << kept.out << kept.err;
+  EXPECT_TRUE(contains(kept.out,
+                       "): kept the later segment, dropped the 501 earlier rows at or "
+                       "after 15\n"))
+      << kept.out;
+  EXPECT_TRUE(contains(kept.out, "\nverdict: PASS\n"));
+  const RunResult bad = run_frictionref(
+      {"compare", "--candidate", file.string(), "--lambda", "0.7", "--on-overlap", "first"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err, "frictionref: error: --on-overlap = first: must be error or keep-last\n");
+}
+
 TEST(Compare, WrongModelFailsWithExitOneAndNamesTheChecks) {
   TempDir dir;
   const fs::path curve = exact_curve(dir);

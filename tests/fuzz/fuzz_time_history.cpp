@@ -14,7 +14,8 @@
 //   byte 0   time column spec:         index into kColumnSpecs
 //   byte 1   velocity column spec:     index into kColumnSpecs
 //   byte 2   displacement column spec: index into kColumnSpecs ("" = none)
-//   byte 3   bits 0-1 the model compare() uses (compare_model); bit 2 skip compare()
+//   byte 3   bits 0-1 the model compare() uses (compare_model); bit 2 skip compare();
+//            bit 3 decimal_comma; bit 4 on_overlap = keep_last; bits 5-7 skip_rows (0-7)
 //   rest     the file's bytes
 // Column specs cover the three ways to choose a column: the default (""),
 // by name (as in the header, case and units varied), and by number (valid,
@@ -156,6 +157,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.displacement_column = kColumnSpecs[data[2] % kSpecCount];
   const int model_choice = data[3] & 3;
   const bool run_compare = (data[3] & 4) == 0;
+  options.decimal_comma = (data[3] & 8) != 0;
+  if ((data[3] & 16) != 0) options.on_overlap = TimeHistoryReadOptions::OnOverlap::keep_last;
+  options.skip_rows = data[3] >> 5;
 
   std::istringstream file(std::string(reinterpret_cast<const char*>(data) + 4, size - 4));
   TimeHistory history;
