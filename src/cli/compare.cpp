@@ -11,6 +11,7 @@
 
 #include "atomic_output.hpp"
 #include "command.hpp"
+#include "classify.hpp"
 #include "compare_run.hpp"
 #include "csv_format.hpp"
 #include "figure.hpp"
@@ -142,11 +143,7 @@ nlohmann::ordered_json report_json(const ComparisonReport& r) {
   out["candidate"] = {{"source", r.source},           {"rows", r.rows},
                       {"t_first", r.t_first},         {"t_last", r.t_last},
                       {"max_spacing", r.max_spacing}, {"has_displacement", r.has_displacement}};
-  const Model& m = r.model;
-  out["model"] = {{"mass", m.mass},       {"amplitude", m.amplitude},
-                  {"omega", m.omega},     {"friction", m.friction},
-                  {"lambda", m.lambda()}, {"x0", m.x0},
-                  {"v0", m.v0},           {"t0", m.t0}};
+  out["model"] = model_json(r.model);  // the whole model, as classify's
   const CompareOptions& o = r.options;
   out["options"] = {{"stick_threshold", o.stick_threshold},
                     {"min_stick_duration", o.min_stick_duration},

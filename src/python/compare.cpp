@@ -69,17 +69,7 @@ py::dict report_dict(const ComparisonReport& r) {
   candidate["max_spacing"] = r.max_spacing;
   candidate["has_displacement"] = r.has_displacement;
   out["candidate"] = candidate;
-  const Model& m = r.model;
-  py::dict model;
-  model["mass"] = m.mass;
-  model["amplitude"] = m.amplitude;
-  model["omega"] = m.omega;
-  model["friction"] = m.friction;
-  model["lambda"] = m.lambda();
-  model["x0"] = m.x0;
-  model["v0"] = m.v0;
-  model["t0"] = m.t0;
-  out["model"] = model;
+  out["model"] = model_dict(r.model);  // the whole model, as every JSON output
   const CompareOptions& o = r.options;
   py::dict options;
   options["stick_threshold"] = o.stick_threshold;
