@@ -182,11 +182,10 @@ StiffSpringSimulator::StiffSpringSimulator(const Model& model, double t_end,
     harmonics_.push_back({h.amplitude * dt2_over_m, h.omega, h.phase, 0, 1, std::sin(h.omega * dt_),
                           std::cos(h.omega * dt_)});
   }
-  double start_kick =
-      offset_increment_ - stiffness_increment_ * model.x0 - model.damping * model.v0 * dt2_over_m;
-  for (const Rotation& h : harmonics_)
-    start_kick += h.increment * std::sin(h.omega * t0_ + h.phase);
-  dx_ -= 0.5 * start_kick;
+  // The Taylor step with the whole a0 (Model::force gives F(t0)).
+  const double a0 =
+      (model.force(t0_) - model.stiffness * model.x0 - model.damping * model.v0) / model.mass;
+  dx_ = dt_ * model.v0 - 0.5 * dt_ * dt_ * a0;
 }
 
 template <bool kSample, bool kGeneral>
