@@ -520,13 +520,14 @@ TEST(CompareDefect, DisplacementOffset) {
 // ---------------------------------------------------------------------------
 // Reports.
 
-TEST(CompareReport, BriefReportHasOneLinePerCheckAndTheVerdict) {
+TEST(CompareReport, BriefReportHasTheDiagnosisOneLinePerCheckAndTheVerdict) {
   const Model model = seed_model(0.7);
   TimeHistory candidate = exact_history(model, 30, 0.01);
   for (double& v : candidate.v) v *= 1.1;
   const ComparisonReport r = compare(model, candidate);
   const std::string brief = r.brief_report();
-  EXPECT_NE(brief.find("velocity_max: FAIL max |v - v_exact| = "), std::string::npos) << brief;
+  EXPECT_EQ(brief.rfind("diagnosis: scale: v = 1.1 v_exact: ", 0), 0u) << brief;
+  EXPECT_NE(brief.find("\nvelocity_max: FAIL max |v - v_exact| = "), std::string::npos) << brief;
   EXPECT_NE(brief.find("\nstop_times: PASS "), std::string::npos) << brief;
   EXPECT_NE(brief.find("\nregime: PASS "), std::string::npos) << brief;
   const std::string last = "verdict: FAIL (checks velocity_max, velocity_rms)\n";
@@ -534,15 +535,18 @@ TEST(CompareReport, BriefReportHasOneLinePerCheckAndTheVerdict) {
   EXPECT_EQ(brief.substr(brief.size() - last.size()), last) << brief;
   std::size_t lines = 0;
   for (char c : brief) lines += c == '\n';
-  EXPECT_EQ(lines, r.checks.size() + 1);
+  EXPECT_EQ(lines, r.checks.size() + 2);
 
+  // The full report opens with the same diagnosis and ends with the rest.
   const std::string full = r.full_report();
+  EXPECT_EQ(full.rfind("diagnosis: scale: ", 0), 0u) << full;
   for (const char* part : {"candidate: exact", "model: mass=1 amplitude=1 omega=1 friction=0.7",
                            "stick detection: |v| < 0.001 B/(m w)", "tolerances: velocity_max 0.02",
                            "stop_time 0.01 periods", "  stick 1: exact [0, "}) {
     EXPECT_NE(full.find(part), std::string::npos) << part << "\n" << full;
   }
-  EXPECT_EQ(full.substr(full.size() - brief.size()), brief);
+  const std::string checks = brief.substr(brief.find('\n') + 1);
+  EXPECT_EQ(full.substr(full.size() - checks.size()), checks);
 }
 
 TEST(CompareReport, ToleranceOptionsAreHonoured) {

@@ -1,15 +1,16 @@
 // Checking another code's time history against the exact solution: the
 // velocity error, the stick intervals (dead bands) it shows, the regime, and
-// the displacement; each judged against a tolerance, with a PASS/FAIL verdict
+// the displacement; each judged against a tolerance, with a PASS, FAIL or
+// INCONCLUSIVE verdict and a diagnosis of the likeliest defect
 // (docs/cross-checking.md).
 //
 // Principle: every feature of the candidate is compared with the same feature
-// extracted the same way from the exact solution sampled at the candidate's
-// own times (frictionref::sample_at). So a stick that starts or ends between
-// two samples, or a breakaway whose velocity creeps up through the threshold,
-// biases both alike and a correct candidate passes at any sampling. The exact
-// stick phases of the engine are reported alongside, and the creep check uses
-// them directly.
+// extracted the same way from the exact solution at the candidate's own times
+// (one pass of the engine). So a stick that starts or ends between two
+// samples, or a breakaway whose velocity creeps up through the threshold,
+// biases both alike. What no sample can see is judged from the engine's own
+// phases: PASS needs the samples to resolve every exact phase and event. The
+// creep check and the diagnosis read those phases too.
 //
 // Scales: velocities are judged relative to B/(m w), displacements relative to
 // B/(m w^2) and times relative to the forcing period 2 pi / w, so the default
@@ -71,6 +72,40 @@ enum class Verdict {
   inconclusive,  // every check passed, but the samples cannot see part of the exact
                  // motion (ComparisonReport::unresolved): a defect there would pass too
 };
+
+// The most likely class of defect behind a verdict, named first in every
+// report (docs/cross-checking.md, "The diagnosis").
+enum class Defect {
+  none,              // PASS: nothing to name
+  unresolved,        // INCONCLUSIVE: the samples do not see part of the exact motion
+  time_shift,        // the candidate is the exact motion late (or early) by a constant time
+  scale,             // v = s v_exact with s != 1 (units, amplitude, mass)
+  chattering,        // v flips sign, sample after sample, inside the exact sticks
+  creep,             // v small but not zero inside the exact sticks (regularised friction)
+  missed_breakaway,  // at rest where the exact mass breaks away and slides
+  missed_stop,       // sliding on where the exact mass stops and sticks
+  drift,             // a displacement error growing with time (a velocity bias)
+  offset,            // a constant displacement error (x0, or another reference)
+  unclassified,      // FAIL, and no single class above explains it
+};
+
+struct Diagnosis {
+  Defect defect = Defect::none;
+  // time_shift: the shift [time] (> 0: the candidate is late, v(t) = v_exact(t - shift));
+  // scale: the factor s; drift: the velocity bias [length/time]; offset: [length];
+  // chattering, creep, missed_breakaway, missed_stop: how many exact phases show it;
+  // none, unresolved, unclassified: 0.
+  double value = 0;
+  std::string evidence;  // the measurements that point at it, in words
+
+  // "time shift: ..." (the class in words, then the evidence).
+  std::string text() const;
+};
+
+// "none", "unresolved", "time_shift", "scale", "chattering", "creep",
+// "missed_breakaway", "missed_stop", "drift", "offset", "unclassified"
+std::string_view to_string(Defect defect);
+std::optional<Defect> defect_from_string(std::string_view text);
 
 // "velocity_max", "velocity_rms", "displacement_max", "stop_times",
 // "missed_stops", "extra_stops", "creep", "regime"
@@ -191,6 +226,8 @@ struct ComparisonReport {
   std::size_t unresolved_events = 0;
   double resolving_step = 0;  // an archive step that resolves them all [time]; 0 if none needed
 
+  Diagnosis diagnosis;  // the most likely defect behind the verdict
+
   Verdict verdict = Verdict::pass;  // fail if a check failed; else inconclusive if anything
                                     // is unresolved; else pass
   std::vector<std::string> notes;   // remarks that are not checks (sampling, short record)
@@ -203,12 +240,14 @@ struct ComparisonReport {
 
   // Names of the failed checks, in order.
   std::vector<std::string> failed_checks() const;
-  // One line per check, "<name>: PASS <message>" or "<name>: FAIL <message>", then
-  // (when something is unresolved) "resolution: ...", then "verdict: PASS",
-  // "verdict: FAIL (checks a, b)" or "verdict: INCONCLUSIVE (...)".
+  // "diagnosis: <class>: <evidence>", then one line per check,
+  // "<name>: PASS <message>" or "<name>: FAIL <message>", then (when something
+  // is unresolved) "resolution: ...", then "verdict: PASS", "verdict: FAIL
+  // (checks a, b)" or "verdict: INCONCLUSIVE (...)".
   std::string brief_report() const;
-  // Everything for people: candidate, model, scales, tolerances, errors, the stick
-  // table (up to 50 rows), the regime, notes, then brief_report().
+  // Everything for people: the diagnosis line, candidate, model, scales,
+  // tolerances, errors, the stick table (up to 50 rows), the regime, notes,
+  // then the checks and the verdict as in brief_report().
   std::string full_report() const;
 };
 

@@ -3,11 +3,13 @@
 
 #include "frictionref/classification.hpp"
 #include "frictionref/comparison.hpp"
+#include "frictionref/comparison_json.hpp"
 #include "frictionref/den_hartog.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
 #include "frictionref/model_fields.hpp"
+#include "frictionref/model_json.hpp"
 #include "frictionref/parameter_map.hpp"
 #include "frictionref/phase.hpp"
 #include "frictionref/sampling.hpp"

@@ -10,6 +10,7 @@
 #include "atomic_output.hpp"
 #include "command.hpp"
 #include "csv_format.hpp"
+#include "frictionref/model_json.hpp"
 #include "frictionref/version.hpp"
 #include "model_options.hpp"
 
@@ -77,27 +78,9 @@ void run_classify(const ClassifyCommandOptions& options, const Invocation&) {
 
 }  // namespace
 
+// The library's writer (model_json.hpp), as a value to embed.
 nlohmann::ordered_json model_json(const Model& model) {
-  nlohmann::ordered_json json = {{"mass", model.mass},
-                                 {"amplitude", model.amplitude},
-                                 {"omega", model.omega},
-                                 {"friction", model.friction},
-                                 {"lambda", model.lambda()}};
-  if (model.static_friction) {
-    json["static_friction"] = *model.static_friction;
-  } else {
-    json["static_friction"] = nullptr;
-  }
-  json["stiffness"] = model.stiffness;
-  json["damping"] = model.damping;
-  json["force_offset"] = model.force_offset;
-  json["harmonics"] = nlohmann::ordered_json::array();
-  for (const Harmonic& h : model.harmonics)
-    json["harmonics"].push_back({h.amplitude, h.omega, h.phase});
-  json["x0"] = model.x0;
-  json["v0"] = model.v0;
-  json["t0"] = model.t0;
-  return json;
+  return nlohmann::ordered_json::parse(model_json_text(model));
 }
 
 nlohmann::ordered_json classify_json(const Model& model, const SteadyState& steady) {

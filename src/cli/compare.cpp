@@ -7,15 +7,15 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "atomic_output.hpp"
-#include "command.hpp"
 #include "classify.hpp"
+#include "command.hpp"
 #include "compare_run.hpp"
 #include "csv_format.hpp"
 #include "figure.hpp"
 #include "frictionref/comparison.hpp"
+#include "frictionref/comparison_json.hpp"
 #include "frictionref/sampling.hpp"
 #include "frictionref/time_history.hpp"
 #include "frictionref/version.hpp"
@@ -105,109 +105,6 @@ Figure comparison_figure(const ComparisonReport& report, const TimeHistory& hist
   return figure;
 }
 
-nlohmann::ordered_json interval_json(double start, double end) {
-  return {{"start", start}, {"end", end}};
-}
-
-nlohmann::ordered_json intervals_json(const std::vector<StickInterval>& list) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const StickInterval& s : list) out.push_back(interval_json(s.start, s.end));
-  return out;
-}
-
-nlohmann::ordered_json report_json(const ComparisonReport& r) {
-  using json = nlohmann::ordered_json;
-  json out;
-  out["verdict"] = std::string(to_string(r.verdict));
-  out["failed_checks"] = r.failed_checks();
-  json parts = json::array();
-  for (const UnresolvedPart& p : r.unresolved)
-    parts.push_back({{"kind", p.kind == UnresolvedPart::Kind::phase ? "phase" : "event"},
-                     {"phase", std::string(to_string(p.phase))},
-                     {"start", p.start},
-                     {"end", p.end},
-                     {"spacing", p.spacing}});
-  out["resolution"] = {{"resolved", r.unresolved_phases + r.unresolved_events == 0},
-                       {"unresolved_phases", r.unresolved_phases},
-                       {"unresolved_events", r.unresolved_events},
-                       {"resolving_step", r.resolving_step},
-                       {"parts", parts}};
-  json checks = json::array();
-  for (const Check& check : r.checks)
-    checks.push_back({{"name", std::string(check.name())},
-                      {"passed", check.passed},
-                      {"value", check.value},
-                      {"tolerance", check.tolerance},
-                      {"message", check.message}});
-  out["checks"] = checks;
-  out["candidate"] = {{"source", r.source},           {"rows", r.rows},
-                      {"t_first", r.t_first},         {"t_last", r.t_last},
-                      {"max_spacing", r.max_spacing}, {"has_displacement", r.has_displacement}};
-  out["model"] = model_json(r.model);  // the whole model, as classify's
-  const CompareOptions& o = r.options;
-  out["options"] = {{"stick_threshold", o.stick_threshold},
-                    {"min_stick_duration", o.min_stick_duration},
-                    {"velocity_max_tolerance", o.velocity_max_tolerance},
-                    {"velocity_rms_tolerance", o.velocity_rms_tolerance},
-                    {"stop_time_tolerance", o.stop_time_tolerance},
-                    {"max_missed_stops", o.max_missed_stops},
-                    {"max_extra_stops", o.max_extra_stops},
-                    {"displacement_max_tolerance", o.displacement_max_tolerance},
-                    {"regime_window", o.regime_window}};
-  out["scales"] = {{"velocity", r.velocity_scale},
-                   {"displacement", r.displacement_scale},
-                   {"period", r.period},
-                   {"stick_velocity", r.stick_velocity},
-                   {"min_stick_time", r.min_stick_time},
-                   {"stop_time_margin", r.stop_time_margin}};
-  out["velocity_error"] = {{"max", r.velocity_max_error},
-                           {"max_relative", r.velocity_max_error / r.velocity_scale},
-                           {"max_time", r.velocity_max_error_time},
-                           {"rms", r.velocity_rms_error},
-                           {"rms_relative", r.velocity_rms_error / r.velocity_scale}};
-  if (r.has_displacement) {
-    out["displacement_error"] = {{"max", r.displacement_max_error},
-                                 {"max_relative", r.displacement_max_error / r.displacement_scale},
-                                 {"max_time", r.displacement_max_error_time},
-                                 {"rms", r.displacement_rms_error},
-                                 {"rms_relative", r.displacement_rms_error / r.displacement_scale}};
-  } else {
-    out["displacement_error"] = nullptr;
-  }
-  json matched = json::array();
-  for (const MatchedStick& s : r.matched) {
-    json phase = nullptr;
-    if (!std::isnan(s.phase_start)) phase = interval_json(s.phase_start, s.phase_end);
-    matched.push_back({{"number", s.number},
-                       {"exact", interval_json(s.exact.start, s.exact.end)},
-                       {"candidate", interval_json(s.candidate.start, s.candidate.end)},
-                       {"start_error", s.start_error},
-                       {"end_error", s.end_error},
-                       {"exact_phase", phase}});
-  }
-  out["sticks"] = {{"exact_phases", intervals_json(r.exact_phases)},
-                   {"exact", intervals_json(r.exact_sticks)},
-                   {"candidate", intervals_json(r.candidate_sticks)},
-                   {"matched", matched},
-                   {"missed", intervals_json(r.missed)},
-                   {"extra", intervals_json(r.extra)}};
-  out["creep"] = {{"max_velocity", r.creep_max_velocity},
-                  {"max_relative", r.creep_max_velocity / r.velocity_scale},
-                  {"time", r.creep_time},
-                  {"samples", r.creep_samples}};
-  out["regime"] = {{"candidate", std::string(to_string(r.candidate_regime))},
-                   {"exact", std::string(to_string(r.exact_shown_regime))},
-                   {"steady_state", std::string(to_string(r.exact_regime))},
-                   {"steady_state_method", std::string(to_string(r.exact_regime_method))},
-                   {"window_start", r.regime_window_start},
-                   {"window_end", r.t_last},
-                   {"candidate_stops_per_period", r.candidate_stops_per_period},
-                   {"exact_stops_per_period", r.exact_stops_per_period}};
-  out["notes"] = r.notes;
-  out["version"] = version;
-  return out;
-}
-
 ExitCode run_compare(const CompareCliOptions& options, const Invocation& invocation) {
   // Everything typed is checked before the file is read.
   const PreparedComparison prepared = prepare_comparison(options.inputs, options.model);
@@ -225,9 +122,7 @@ ExitCode run_compare(const CompareCliOptions& options, const Invocation& invocat
     write_figure(comparison_figure(report, history, name), options.plot, "--plot");
   }
   if (options.json) {
-    nlohmann::ordered_json json = report_json(report);
-    json["command"] = invocation.command_line;
-    fmt::print(out.stream(), "{}\n", json.dump(2));
+    fmt::print(out.stream(), "{}\n", comparison_json(report, invocation.command_line));
   } else {
     fmt::print(out.stream(), "# frictionref {} compare\n# command: {}\n{}", version,
                invocation.command_line, report.full_report());
@@ -270,7 +165,9 @@ Command add_compare_command(CLI::App& app) {
       "most that tolerance apart. Otherwise a run that passes every check is INCONCLUSIVE (a\n"
       "defect between the samples would pass too), and the report names what is unresolved\n"
       "and the archive step that would resolve it.\n"
-      "Output: a text report ending in one 'name: PASS|FAIL ...' line per check, a\n"
+      "Output: a text report that opens with 'diagnosis: <defect>: <evidence>' (the most likely\n"
+      "defect: time shift, scale, chattering, creep, missed stop, missed breakaway, drift,\n"
+      "offset; with its value) and ends in one 'name: PASS|FAIL ...' line per check, a\n"
       "'resolution: ...' line if something is unresolved, and 'verdict: PASS',\n"
       "'verdict: FAIL (checks ...)' or 'verdict: INCONCLUSIVE (...)'; --json gives the same as\n"
       "one object.\n"

@@ -8,144 +8,18 @@
 #include "arguments.hpp"
 #include "errors.hpp"
 #include "frictionref/comparison.hpp"
-#include "frictionref/version.hpp"
+#include "frictionref/comparison_json.hpp"
 #include "model.hpp"
 #include "module.hpp"
 
 namespace frictionref::python {
 namespace {
 
-py::dict interval(double start, double end) {
-  py::dict d;
-  d["start"] = start;
-  d["end"] = end;
-  return d;
-}
-
-py::list intervals(const std::vector<StickInterval>& list) {
-  py::list out;
-  for (const StickInterval& s : list) out.append(interval(s.start, s.end));
-  return out;
-}
-
-// The CLI's report_json (src/cli/compare.cpp), key for key, plus the text report.
+// compare --json's document, key for key (the library writes both), with
+// the model's harmonics as tuples like Model.to_dict(), plus the text report.
 py::dict report_dict(const ComparisonReport& r) {
-  py::dict out;
-  out["verdict"] = std::string(to_string(r.verdict));
-  out["failed_checks"] = r.failed_checks();
-  py::list parts;
-  for (const UnresolvedPart& p : r.unresolved) {
-    py::dict part;
-    part["kind"] = p.kind == UnresolvedPart::Kind::phase ? "phase" : "event";
-    part["phase"] = std::string(to_string(p.phase));
-    part["start"] = p.start;
-    part["end"] = p.end;
-    part["spacing"] = p.spacing;
-    parts.append(part);
-  }
-  py::dict resolution;
-  resolution["resolved"] = r.unresolved_phases + r.unresolved_events == 0;
-  resolution["unresolved_phases"] = r.unresolved_phases;
-  resolution["unresolved_events"] = r.unresolved_events;
-  resolution["resolving_step"] = r.resolving_step;
-  resolution["parts"] = parts;
-  out["resolution"] = resolution;
-  py::list checks;
-  for (const Check& check : r.checks) {
-    py::dict c;
-    c["name"] = std::string(check.name());
-    c["passed"] = check.passed;
-    c["value"] = check.value;
-    c["tolerance"] = check.tolerance;
-    c["message"] = check.message;
-    checks.append(c);
-  }
-  out["checks"] = checks;
-  py::dict candidate;
-  candidate["source"] = r.source;
-  candidate["rows"] = r.rows;
-  candidate["t_first"] = r.t_first;
-  candidate["t_last"] = r.t_last;
-  candidate["max_spacing"] = r.max_spacing;
-  candidate["has_displacement"] = r.has_displacement;
-  out["candidate"] = candidate;
-  out["model"] = model_dict(r.model);  // the whole model, as every JSON output
-  const CompareOptions& o = r.options;
-  py::dict options;
-  options["stick_threshold"] = o.stick_threshold;
-  options["min_stick_duration"] = o.min_stick_duration;
-  options["velocity_max_tolerance"] = o.velocity_max_tolerance;
-  options["velocity_rms_tolerance"] = o.velocity_rms_tolerance;
-  options["stop_time_tolerance"] = o.stop_time_tolerance;
-  options["max_missed_stops"] = o.max_missed_stops;
-  options["max_extra_stops"] = o.max_extra_stops;
-  options["displacement_max_tolerance"] = o.displacement_max_tolerance;
-  options["regime_window"] = o.regime_window;
-  out["options"] = options;
-  py::dict scales;
-  scales["velocity"] = r.velocity_scale;
-  scales["displacement"] = r.displacement_scale;
-  scales["period"] = r.period;
-  scales["stick_velocity"] = r.stick_velocity;
-  scales["min_stick_time"] = r.min_stick_time;
-  scales["stop_time_margin"] = r.stop_time_margin;
-  out["scales"] = scales;
-  py::dict velocity;
-  velocity["max"] = r.velocity_max_error;
-  velocity["max_relative"] = r.velocity_max_error / r.velocity_scale;
-  velocity["max_time"] = r.velocity_max_error_time;
-  velocity["rms"] = r.velocity_rms_error;
-  velocity["rms_relative"] = r.velocity_rms_error / r.velocity_scale;
-  out["velocity_error"] = velocity;
-  if (r.has_displacement) {
-    py::dict displacement;
-    displacement["max"] = r.displacement_max_error;
-    displacement["max_relative"] = r.displacement_max_error / r.displacement_scale;
-    displacement["max_time"] = r.displacement_max_error_time;
-    displacement["rms"] = r.displacement_rms_error;
-    displacement["rms_relative"] = r.displacement_rms_error / r.displacement_scale;
-    out["displacement_error"] = displacement;
-  } else {
-    out["displacement_error"] = py::none();
-  }
-  py::list matched;
-  for (const MatchedStick& s : r.matched) {
-    py::dict d;
-    d["number"] = s.number;
-    d["exact"] = interval(s.exact.start, s.exact.end);
-    d["candidate"] = interval(s.candidate.start, s.candidate.end);
-    d["start_error"] = s.start_error;
-    d["end_error"] = s.end_error;
-    d["exact_phase"] =
-        std::isnan(s.phase_start) ? py::object(py::none()) : interval(s.phase_start, s.phase_end);
-    matched.append(d);
-  }
-  py::dict sticks;
-  sticks["exact_phases"] = intervals(r.exact_phases);
-  sticks["exact"] = intervals(r.exact_sticks);
-  sticks["candidate"] = intervals(r.candidate_sticks);
-  sticks["matched"] = matched;
-  sticks["missed"] = intervals(r.missed);
-  sticks["extra"] = intervals(r.extra);
-  out["sticks"] = sticks;
-  py::dict creep;
-  creep["max_velocity"] = r.creep_max_velocity;
-  creep["max_relative"] = r.creep_max_velocity / r.velocity_scale;
-  creep["time"] = r.creep_time;
-  creep["samples"] = r.creep_samples;
-  out["creep"] = creep;
-  py::dict regime;
-  regime["candidate"] = std::string(to_string(r.candidate_regime));
-  regime["exact"] = std::string(to_string(r.exact_shown_regime));
-  regime["steady_state"] = std::string(to_string(r.exact_regime));
-  regime["steady_state_method"] = std::string(to_string(r.exact_regime_method));
-  regime["window_start"] = r.regime_window_start;
-  regime["window_end"] = r.t_last;
-  regime["candidate_stops_per_period"] = r.candidate_stops_per_period;
-  regime["exact_stops_per_period"] = r.exact_stops_per_period;
-  out["regime"] = regime;
-  out["notes"] = r.notes;
-  out["version"] = version;
+  py::dict out = py::module_::import("json").attr("loads")(comparison_json(r));
+  out["model"] = model_dict(r.model);
   out["report"] = r.full_report();
   return out;
 }
@@ -237,7 +111,8 @@ docs/cross-checking.md). Needs amplitude B > 0.
 
 Returns the report as a dict with the keys of `compare --json`: verdict
 ('PASS', 'FAIL' or 'INCONCLUSIVE': every check passed but the samples do not
-resolve the exact motion, see resolution), failed_checks, checks (name, passed, value, tolerance,
+resolve the exact motion, see resolution), failed_checks, diagnosis (defect:
+the most likely defect class, value, evidence, text), checks (name, passed, value, tolerance,
 message), candidate, model, options, scales, velocity_error,
 displacement_error (None without x), sticks, creep, regime, notes, version,
 and report (the CLI's text report). Tolerances as the CLI's options, in

@@ -7,7 +7,8 @@
 // and matches the options (x present iff a displacement column was asked
 // for). compare() on an accepted history either throws InvalidInput or
 // returns a report that is consistent (verdict from the checks and the
-// resolution, no NaN measurement, the history's rows and times). Any other exception, a
+// resolution, a diagnosis that agrees with the verdict, no NaN measurement,
+// the history's rows and times). Any other exception, a
 // sanitizer report or a hang is a finding.
 //
 // Input layout:
@@ -39,8 +40,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "fuzz_check.hpp"
 #include "frictionref/frictionref.hpp"
+#include "fuzz_check.hpp"
 
 namespace {
 
@@ -80,7 +81,6 @@ bool allow_numerical_failure() {
   std::fflush(stderr);
   std::abort();
 }
-
 
 frictionref::Model compare_model(int which) {
   frictionref::Model model;  // m = B = w = 1, the seed's cases
@@ -132,6 +132,16 @@ void check_report(const TimeHistory& history, const frictionref::ComparisonRepor
     previous = part.start;
   }
   FUZZ_CHECK(report.failed_checks().empty() == all_passed);
+  // The diagnosis names nothing on PASS, the resolution on INCONCLUSIVE, a
+  // defect on FAIL; with a finite value and words, first in both reports.
+  using frictionref::Defect;
+  const Defect defect = report.diagnosis.defect;
+  FUZZ_CHECK((report.verdict == frictionref::Verdict::pass) == (defect == Defect::none));
+  FUZZ_CHECK((report.verdict == frictionref::Verdict::inconclusive) ==
+             (defect == Defect::unresolved));
+  FUZZ_CHECK_AT(std::isfinite(report.diagnosis.value), report.diagnosis.text());
+  FUZZ_CHECK(!report.diagnosis.evidence.empty());
+  FUZZ_CHECK(report.brief_report().rfind("diagnosis: " + report.diagnosis.text() + "\n", 0) == 0);
   FUZZ_CHECK(!std::isnan(report.velocity_max_error) && !std::isnan(report.velocity_rms_error));
   FUZZ_CHECK(!std::isnan(report.displacement_max_error));
   for (const frictionref::StickInterval& stick : report.candidate_sticks) {

@@ -169,6 +169,8 @@ void checks_section(HtmlWriter& html, const ComparisonReport& r) {
     html.text(" failed checks: " + list);
   }
   html.close("p");
+  // The most likely defect first: the checks below are its symptoms.
+  html.element("p", "Diagnosis: " + r.diagnosis.text(), {{"id", "diagnosis"}});
   if (r.unresolved_phases + r.unresolved_events > 0)
     html.element("p",
                  "Resolution: " + r.resolution_text() + ". " +
