@@ -2,6 +2,7 @@
 #pragma once
 
 #include "frictionref/classification.hpp"
+#include "frictionref/classification_json.hpp"
 #include "frictionref/comparison.hpp"
 #include "frictionref/comparison_json.hpp"
 #include "frictionref/den_hartog.hpp"

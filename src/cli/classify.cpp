@@ -10,8 +10,7 @@
 #include "atomic_output.hpp"
 #include "command.hpp"
 #include "csv_format.hpp"
-#include "frictionref/model_json.hpp"
-#include "frictionref/version.hpp"
+#include "frictionref/classification_json.hpp"
 #include "model_options.hpp"
 
 namespace frictionref::cli {
@@ -23,12 +22,6 @@ struct ClassifyCommandOptions {
   bool simulate = false;
   std::string max_periods = "400";
 };
-
-// NaN marks a figure that does not apply to the regime: JSON null.
-nlohmann::ordered_json value_or_null(double value) {
-  if (std::isnan(value)) return nullptr;
-  return value;
-}
 
 // The same names as the JSON keys, "n/a" where JSON has null.
 std::string text_value(const nlohmann::ordered_json& value) {
@@ -78,61 +71,13 @@ void run_classify(const ClassifyCommandOptions& options, const Invocation&) {
 
 }  // namespace
 
-// The library's writer (model_json.hpp), as a value to embed.
-nlohmann::ordered_json model_json(const Model& model) {
-  return nlohmann::ordered_json::parse(model_json_text(model));
-}
-
+// The library's writer (classification_json.hpp), as values to embed.
 nlohmann::ordered_json classify_json(const Model& model, const SteadyState& steady) {
-  nlohmann::ordered_json json;
-  json["regime"] = std::string(to_string(steady.regime));
-  json["method"] = std::string(to_string(ClassificationMethod::closed_form));
-  json["lambda"] = value_or_null(steady.lambda);
-  json["threshold"] = value_or_null(steady.threshold);
-  json["threshold_quoted"] = value_or_null(steady.threshold_quoted);
-  json["regime_by_quoted_threshold"] = std::string(to_string(steady.regime_by_quoted_threshold));
-  json["reversal_phase"] = value_or_null(steady.reversal_phase);
-  json["breakaway_phase"] = value_or_null(steady.breakaway_phase);
-  json["stop_phase"] = value_or_null(steady.stop_phase);
-  json["stops_per_period"] = value_or_null(steady.stops_per_period);
-  json["stuck_fraction"] = value_or_null(steady.stuck_fraction);
-  json["slide_per_half_period"] = value_or_null(steady.slide_per_half_period);
-  json["peak_velocity"] = value_or_null(steady.peak_velocity);
-  json["energy_per_period"] = value_or_null(steady.energy_per_period);
-  json["model"] = model_json(model);
-  json["version"] = version;
-  return json;
+  return nlohmann::ordered_json::parse(steady_state_json(model, steady));
 }
 
 nlohmann::ordered_json classify_json(const Model& model, const Classification& c) {
-  if (c.seed && c.method == ClassificationMethod::closed_form) return classify_json(model, *c.seed);
-  nlohmann::ordered_json json;
-  json["regime"] = std::string(to_string(c.regime));
-  json["method"] = std::string(to_string(c.method));
-  json["forcing_period"] = value_or_null(c.forcing_period);
-  json["multiplicity"] = c.multiplicity;
-  json["transient_periods"] = c.transient_periods;
-  json["stops_per_period"] = value_or_null(c.stops_per_period);
-  json["reversals_per_period"] = value_or_null(c.reversals_per_period);
-  json["stuck_fraction"] = value_or_null(c.stuck_fraction);
-  json["drift_per_period"] = value_or_null(c.drift_per_period);
-  json["peak_velocity"] = value_or_null(c.peak_velocity);
-  if (c.den_hartog) {
-    const DenHartogSolution& d = *c.den_hartog;
-    json["den_hartog"] = {{"non_stop", d.non_stop},
-                          {"stable", d.stable},
-                          {"failed", d.failed},
-                          {"frequency_ratio", value_or_null(d.frequency_ratio)},
-                          {"amplitude", value_or_null(d.amplitude)},
-                          {"reversal_phase", value_or_null(d.reversal_phase)},
-                          {"peak_velocity", value_or_null(d.peak_velocity)},
-                          {"growth", value_or_null(d.growth)}};
-  } else {
-    json["den_hartog"] = nullptr;
-  }
-  json["model"] = model_json(model);
-  json["version"] = version;
-  return json;
+  return nlohmann::ordered_json::parse(classification_json(model, c));
 }
 
 Command add_classify_command(CLI::App& app) {

@@ -10,10 +10,6 @@
 
 namespace frictionref::cli {
 
-// The model as a JSON object: every field (static_friction null when unset,
-// harmonics as [B, W, PHI] arrays).
-nlohmann::ordered_json model_json(const Model& model);
-
 // The seed's closed form: every SteadyState field by its name (regimes as
 // strings, NaN as null) after regime and method, the model as an object, and
 // the version. Keys keep this order.

@@ -9,7 +9,6 @@
 #include <memory>
 
 #include "atomic_output.hpp"
-#include "classify.hpp"
 #include "command.hpp"
 #include "compare_run.hpp"
 #include "csv_format.hpp"
