@@ -170,7 +170,9 @@ std::optional<Diagnosis> scale(const ComparisonReport& r, const Samples& s,
   const double den = s.integral([&](std::size_t i) { return at[i].v * at[i].v; });
   if (!(den > 0)) return std::nullopt;
   const double factor = s.integral([&](std::size_t i) { return at[i].v * s.v()[i]; }) / den;
-  if (!std::isfinite(factor) || factor == 1) return std::nullopt;
+  // A factor near 0 "explains" a candidate at rest throughout: that is no
+  // scale error but motion missed, for the phase scan to name.
+  if (!std::isfinite(factor) || factor == 1 || !(std::fabs(factor) >= 1e-3)) return std::nullopt;
   const Residual after = s.residual([&](std::size_t i) { return factor * at[i].v; });
   if (!s.explains(after, before)) return std::nullopt;
   Diagnosis d;
