@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "report_format.hpp"
+#include "sticks.hpp"
 
 namespace frictionref::comparison {
 namespace {
@@ -223,16 +224,10 @@ std::optional<Diagnosis> phase_anomalies(const ComparisonReport& r, const Sample
   std::vector<Anomaly> found;
   std::size_t sticks_seen = 0, slips_seen = 0;
   for (const Phase& p : s.exact().phases) {
-    const double start = std::max(p.t_begin, r.t_first), end = std::min(p.t_end, r.t_last);
-    // Less the stop-time margin at ends that are events, not the record's ends.
-    const double lo = p.t_begin <= r.t_first ? start : start + r.stop_time_margin;
-    const double hi = p.t_end >= r.t_last ? end : end - r.stop_time_margin;
-    if (!(lo <= hi)) continue;
-    const auto first = std::lower_bound(t.begin(), t.end(), lo);
-    const auto last = std::upper_bound(t.begin(), t.end(), hi);
-    if (first >= last) continue;
-    const std::size_t a = static_cast<std::size_t>(first - t.begin());
-    const std::size_t b = static_cast<std::size_t>(last - t.begin());
+    // Read like the creep check: less the stop-time margin at event ends.
+    const RowRange rows = rows_inside(r, t, p.t_begin, p.t_end);
+    if (rows.first >= rows.last) continue;
+    const std::size_t a = rows.first, b = rows.last;
     Anomaly anomaly;
     anomaly.start = p.t_begin;
     anomaly.end = p.t_end;

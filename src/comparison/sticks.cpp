@@ -115,23 +115,28 @@ void match_sticks(ComparisonReport& r) {
   }
 }
 
+RowRange rows_inside(const ComparisonReport& r, const std::vector<double>& t, double begin,
+                     double end) {
+  const double lo = begin <= r.t_first ? begin : begin + r.stop_time_margin;
+  const double hi = end >= r.t_last ? end : end - r.stop_time_margin;
+  if (!(lo <= hi)) return {};
+  const auto first = std::lower_bound(t.begin(), t.end(), lo);
+  const auto last = std::upper_bound(first, t.end(), hi);
+  return {static_cast<std::size_t>(first - t.begin()), static_cast<std::size_t>(last - t.begin())};
+}
+
 std::size_t measure_creep(ComparisonReport& r, const std::vector<double>& t,
                           const std::vector<double>& v) {
   const std::size_t none = r.exact_phases.size();
   std::size_t where = none;
   for (std::size_t p = 0; p < r.exact_phases.size(); ++p) {
-    const StickInterval& s = r.exact_phases[p];
-    const double lo = s.start <= r.t_first ? s.start : s.start + r.stop_time_margin;
-    const double hi = s.end >= r.t_last ? s.end : s.end - r.stop_time_margin;
-    if (lo > hi) continue;
-    auto row = std::lower_bound(t.begin(), t.end(), lo);
-    for (; row != t.end() && *row <= hi; ++row) {
-      const std::size_t n = static_cast<std::size_t>(row - t.begin());
+    const RowRange rows = rows_inside(r, t, r.exact_phases[p].start, r.exact_phases[p].end);
+    for (std::size_t n = rows.first; n < rows.last; ++n) {
       ++r.creep_samples;
       const double speed = std::fabs(v[n]);
       if (where == none || speed > r.creep_max_velocity) {
         r.creep_max_velocity = speed;
-        r.creep_time = *row;
+        r.creep_time = t[n];
         where = p;
       }
     }

@@ -20,6 +20,17 @@ std::vector<StickInterval> stick_phases(const std::vector<Phase>& phases, double
 // the engine's stick phase (r.exact_phases) that overlaps it most.
 void match_sticks(ComparisonReport& r);
 
+// The candidate's rows [first, last) inside an exact phase [begin, end], less
+// the stop-time margin at ends that are events (not the record's own ends):
+// where the candidate must show what the phase is, whatever its sampling
+// does at the phase's edges.
+struct RowRange {
+  std::size_t first = 0;
+  std::size_t last = 0;
+};
+RowRange rows_inside(const ComparisonReport& r, const std::vector<double>& t, double begin,
+                     double end);
+
 // Fills r.creep_*: the candidate's largest |v| inside the exact stick phases,
 // less the stop-time margin at ends that are real stops or breakaways (not the
 // record's own ends). Returns the index in r.exact_phases where it was, or
