@@ -121,11 +121,11 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
 
   ComparisonReport r = describe_record(model, history, options);
   const comparison::ExactMotion exact = comparison::exact_motion(model, history.t);
-  const comparison::SampleErrors errors = comparison::measure_errors(r, history, exact);
+  const std::vector<double> v_exact = exact.v();
+  const comparison::SampleErrors errors = comparison::measure_errors(r, history, v_exact, exact);
 
   // Sticks seen the same way on both sides, from the same samples; the
   // engine's stick phases beside them.
-  const std::vector<double> v_exact = exact.v();
   r.exact_phases = comparison::stick_phases(exact.phases, r.t_last);
   r.exact_sticks = detect_sticks(history.t, v_exact, r.stick_velocity, r.min_stick_time);
   r.candidate_sticks = detect_sticks(history.t, history.v, r.stick_velocity, r.min_stick_time);

@@ -27,8 +27,9 @@ struct SampleErrors {
 };
 
 // The velocity and (with x) displacement errors; fills r.velocity_*_error*,
-// r.has_displacement and r.displacement_*_error*.
+// r.has_displacement and r.displacement_*_error*. v_exact: exact.v(), which
+// the caller reads too.
 SampleErrors measure_errors(ComparisonReport& r, const TimeHistory& history,
-                            const ExactMotion& exact);
+                            const std::vector<double>& v_exact, const ExactMotion& exact);
 
 }  // namespace frictionref::comparison
