@@ -129,8 +129,8 @@ TEST(GeneralEngine, DampingRatiosNextToOneAreContinuous) {
   m.friction = 0;
   m.x0 = 1;
   const Solution critical = solve(m, 6.0);
-  for (double c : {std::nextafter(4.0, 5.0), std::nextafter(4.0, 3.0), 4 * (1 + 1e-12),
-                   4 * (1 - 1e-12)}) {
+  for (double c :
+       {std::nextafter(4.0, 5.0), std::nextafter(4.0, 3.0), 4 * (1 + 1e-12), 4 * (1 - 1e-12)}) {
     Model near = m;
     near.damping = c;
     const Solution sol = solve(near, 6.0);
@@ -407,6 +407,43 @@ TEST(GeneralEngine, ApproachToAFarEquilibriumRestsInsideTheBand) {
   EXPECT_LE(std::fabs(m.force_offset - last.x_end), 3 + 0.05);
 }
 
+// Found by fuzzing (corpus general-finding-far-equilibrium-slide-against-n):
+// an underdamped spring (k = 35, c = 10) released at 1.6e12 towards the
+// equilibrium F0 / k = 1.1e14, where N from the slip's closed form is
+// rounded by 1e-2, above Rs = 6.3e-3 and of the order of the harmonic
+// (B = 2.3e-2). At the eighth velocity zero N = +0.015 (resolvably
+// positive) with |N| - Rs inside its rounding; the at-rest rule took the
+// edge from N's slope (falling) and let the backward slip go on, against
+// N, touch after touch until the cap. The mass may rest there or go
+// forwards, never backwards; the motion left is below the rounding of x.
+TEST(GeneralEngine, FarEquilibriumNeverSlidesAgainstAResolvableForce) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 0.02306816;
+  m.omega = 1;
+  m.friction = 0.006291456;
+  m.static_friction = 0.006291456;
+  m.stiffness = 35;
+  m.damping = 10;
+  m.force_offset = 3826688000000000;
+  m.x0 = 63155200;
+  m.v0 = 1603093174681.6001;
+  const Solution s = solve(m, 82.0);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  // Half a damped period each (pi / sqrt(k/m - (c/2m)^2) = 0.9935) until
+  // the motion is below the rounding, then nothing resolvable is left.
+  ASSERT_GE(s.phases.size(), 7u);
+  ASSERT_LE(s.phases.size(), 12u);
+  const double equilibrium = m.force_offset / m.stiffness;
+  for (std::size_t i = 1; i < 6; ++i)  // while the transient dwarfs B / k
+    EXPECT_NEAR(s.phases[i].t_end - s.phases[i].t_begin, pi / std::sqrt(10.0), 1e-3) << i;
+  // Every phase ends within the rounding of x (a few ulps of 1.1e14) plus
+  // the harmonic's reach B / k of the equilibrium once the transient died.
+  const Phase& last = s.phases.back();
+  EXPECT_LE(std::fabs(last.x_end - equilibrium),
+            8 * std::numeric_limits<double>::epsilon() * equilibrium);
+}
+
 // Found by fuzzing (corpus general-finding-edge-nudge-zero-noise-start):
 // R = Rs = 3 with the mass at the band's edge (x = F0 - 3 exactly), nudged
 // over it by B = 1e-9 half of every period. A slip's closed form is exact
@@ -466,8 +503,8 @@ TEST(GeneralEngine, FarEquilibriumReversesWithTheHarmonic) {
   const double periods = (t_end - m.t0) * m.omega / (2 * pi);
   EXPECT_LE(s.phases.size(), static_cast<std::size_t>(4 * (periods + 1)));
   const Phase& last = s.phases.back();
-  EXPECT_LE(std::fabs(last.x_end - m.force_offset), 4 * std::numeric_limits<double>::epsilon() *
-                                                        m.force_offset);
+  EXPECT_LE(std::fabs(last.x_end - m.force_offset),
+            4 * std::numeric_limits<double>::epsilon() * m.force_offset);
 }
 
 // Found by fuzzing (corpus general-finding-unresolvable-dip-touches): the

@@ -90,8 +90,8 @@ class LinearOscillatorFamily {
   // do not settle) the scalar type's bracketing solver. `third` bounds
   // |f'''| on the bracket.
   template <class JetAt, class F, class DF>
-  Work root_in(const ZeroBracket<Work>& bracket, const JetAt& jet_at, const Work& third,
-               const F& f, const DF& df);
+  Work root_in(const ZeroBracket<Work>& bracket, const JetAt& jet_at, const Work& third, const F& f,
+               const DF& df);
 
   // The event-search probe on a closed form: `Law` gives jets and bounds.
   template <class Evaluate, class Bound>
@@ -150,8 +150,15 @@ auto LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y,
   if (-excess > tolerance) return {0, false};
   // Within the resolution of a crossing of |n| = rs: the way n moves decides
   // (outward: the stick would end within the resolution, so the slip starts
-  // now; inward: the mass stays).
-  const int side = rs > tolerance || fabs(p.d1) <= p.e_d1 ? sign_n : p.d1 > 0 ? 1 : -1;
+  // now; inward: the mass stays). Which edge is crossed comes from the slope
+  // only where the sign of n is itself lost in rounding (rs within the
+  // tolerance): a mass never slides against a resolvable N. (Following the
+  // slope of a resolvably positive N that was falling, a slip that stopped
+  // went on backwards against it, a touch at a time until the cap: found
+  // by fuzzing at a far equilibrium.)
+  const bool sign_resolved = fabs(p.n) > p.e_n;
+  int side = sign_n;
+  if (!(rs > tolerance) && !sign_resolved && fabs(p.d1) > p.e_d1) side = p.d1 > 0 ? 1 : -1;
   if (side == 0) return {0, false};
   if (Work(side) * p.d1 > p.e_d1) return {side, excess <= 0};
   // Inward, or N within rounding of the band's edge and not moving beyond
@@ -175,8 +182,8 @@ auto LinearOscillatorFamily<Real>::root_in(const ZeroBracket<Work>& bracket, con
                                         third, summary_->root_function_calls))
       return *root;
   }
-  return checked(Traits::decreasing_root(f, df, bracket.lo, bracket.hi,
-                                         summary_->root_function_calls))
+  return checked(
+             Traits::decreasing_root(f, df, bracket.lo, bracket.hi, summary_->root_function_calls))
       .root;
 }
 
@@ -195,7 +202,8 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   // the mass breaks away only where |N| exceeds Rs by more than rounding (at
   // the time |N| crossed Rs); a tangency of |N| to Rs within rounding, as at
   // R = B with a spring, leaves it at rest (|N| <= Rs).
-  const Work margin = 2 * net.value_error_bound(fabs(tau) > fabs(tau_end_) ? fabs(tau) : fabs(tau_end_));
+  const Work margin =
+      2 * net.value_error_bound(fabs(tau) > fabs(tau_end_) ? fabs(tau) : fabs(tau_end_));
   // |n| can never exceed rs by more than rounding: at rest for good.
   if (net.magnitude_bound() * (1 + 64 * std::numeric_limits<Work>::epsilon()) <= o_.rs() &&
       (o_.rs() - net.magnitude_bound()) * (o_.rs() + net.magnitude_bound()) + margin > 0)
@@ -307,7 +315,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // no oscillation of v resolvable later in it is skipped (a stretch of 68
   // time units passed over ten reversals: found by fuzzing).
   const auto within_noise = [&law](const Work& from_tau, Work stretch, const Work& e0,
-                                    const Work& res) {
+                                   const Work& res) {
     for (int i = 0; i < 64 && stretch > res; ++i) {
       if (law.point(from_tau + stretch).e_v * 16 >= e0) break;
       stretch /= 2;
@@ -333,7 +341,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // driven by a harmonic: once a period).
   for (int touches = 0;; ++touches) {
     if (touches > 64) throw SearchStalled{};  // touch after touch without progress
-    if (blind > 0) at_from.f = 0;  // exactly: the slip starts (or goes on) from v = 0
+    if (blind > 0) at_from.f = 0;             // exactly: the slip starts (or goes on) from v = 0
     const Work res = Traits::time_resolution(from);
     ZeroBracket<Work> bracket;
     if (from < tau_end_) bracket = Search::run(search, from, at_from, tau_end_, blind, res);
@@ -360,7 +368,8 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     ForceAtStop at_stop;
     const Work along = s * (q.d1 + damping);  // s n - r
     at_stop.n = s * (along + o_.r());
-    const Work slip_error = q.e_d1 + 2 * o_.sigma() * q.e_v + 4 * eps * (fabs(q.d1) + fabs(damping));
+    const Work slip_error =
+        q.e_d1 + 2 * o_.sigma() * q.e_v + 4 * eps * (fabs(q.d1) + fabs(damping));
     at_stop.e_n = slip_error + 4 * eps * o_.r();
     if (along + o_.r() >= 0) {  // N still along the slip: r - rs is exact (Rs near R)
       at_stop.excess = along + (o_.r() - o_.rs());
