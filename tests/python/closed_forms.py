@@ -11,6 +11,8 @@ breakaway at asin(lam) (theory.md 5.6): forward slide to the stop ts (the
 zero of v in [pi - a, pi + a]), rest until pi + a, backward slide to ts + pi,
 rest until 2 pi + a, and so on.
 """
+import functools
+
 import mpmath as mp
 
 mp.mp.dps = 50
@@ -31,6 +33,7 @@ def stop_time(lam):
     return (lo + hi) / 2
 
 
+@functools.lru_cache(maxsize=None)  # 400 bisection steps at 50 digits: once per lambda
 def dead_band_motion(lam):
     """(breakaway a, stop ts, slide D) of the periodic dead-band motion."""
     lam = mp.mpf(lam)
@@ -84,13 +87,14 @@ def case_10_3(t):
     """lam = 1.01 from v0 = -1: one backward slide (v = R t - cos t,
     x = R t^2 / 2 - sin t) to the stop where cos t = R t, then rest."""
     r = mp.mpf("1.01")
-    stop = mp.findroot(lambda s: mp.cos(s) - r * s, 0.73)
+    stop = case_10_3_stop()
     t = mp.mpf(t)
     if t < stop:
         return r * t ** 2 / 2 - mp.sin(t), r * t - mp.cos(t), "slip-"
     return r * stop ** 2 / 2 - mp.sin(stop), mp.mpf(0), "stick"
 
 
+@functools.lru_cache(maxsize=None)
 def case_10_3_stop():
     r = mp.mpf("1.01")
     return mp.findroot(lambda s: mp.cos(s) - r * s, 0.73)
