@@ -437,8 +437,8 @@ TEST(GeneralEngine, FarEquilibriumNeverSlidesAgainstAResolvableForce) {
   const double equilibrium = m.force_offset / m.stiffness;
   for (std::size_t i = 1; i < 6; ++i)  // while the transient dwarfs B / k
     EXPECT_NEAR(s.phases[i].t_end - s.phases[i].t_begin, pi / std::sqrt(10.0), 1e-3) << i;
-  // Every phase ends within the rounding of x (a few ulps of 1.1e14) plus
-  // the harmonic's reach B / k of the equilibrium once the transient died.
+  // The last phase ends at the equilibrium to a few ulps of x (one ulp of
+  // 1.1e14 is 0.016; the harmonic's reach B / k = 6.6e-4 is far below it).
   const Phase& last = s.phases.back();
   EXPECT_LE(std::fabs(last.x_end - equilibrium),
             8 * std::numeric_limits<double>::epsilon() * equilibrium);
