@@ -10,11 +10,11 @@
 #include "atomic_output.hpp"
 #include "command.hpp"
 #include "compare_run.hpp"
+#include "frictionref/sha256.hpp"
 #include "model_options.hpp"
 #include "report/candidate_file.hpp"
 #include "report/report_page.hpp"
 #include "report/reproduce_commands.hpp"
-#include "report/sha256.hpp"
 
 namespace frictionref::cli {
 namespace {
