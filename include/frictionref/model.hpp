@@ -20,14 +20,17 @@
 // Boost.Multiprecision type (see multiprecision.hpp).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "frictionref/detail/number_text.hpp"
 #include "frictionref/error.hpp"
+#include "frictionref/ground_motion.hpp"
 
 namespace frictionref {
 
@@ -57,9 +60,18 @@ struct BasicModel {
   Real damping = 0;       // c: viscous damper [force * time / length]; finite, >= 0
   Real force_offset = 0;  // F0: constant force [force]; finite, either sign
   std::vector<BasicHarmonic<Real>> harmonics;  // further terms of F(t)
-  Real x0 = 0;  // initial position; finite
-  Real v0 = 0;  // initial velocity; finite, either sign
+  Real x0 = 0;                                 // initial position; finite
+  Real v0 = 0;                                 // initial velocity; finite, either sign
   Real t0 = 0;  // initial time; finite, any sign (the force phase is w t, not w (t - t0))
+  // A recorded ground motion (ground_motion.hpp): the ground's acceleration
+  // a_g(t), linear between its samples and zero before the first and after
+  // the last, enters as the force -m a_g(t); x and v are then relative to the
+  // ground, in the record's units (its length unit, seconds). Shared: models
+  // are copied by the million in sweeps, the samples never.
+  std::shared_ptr<const GroundMotion> ground_motion;
+  // With a ground motion: the block never moves towards negative x
+  // (Newmark's one-way, downslope block: the slope holds it the other way).
+  bool one_way = false;
 
   // lambda = R / B, the one dimensionless parameter of the seed's steady state.
   // +infinity when B = 0 < R; NaN when B = R = 0.
@@ -74,14 +86,33 @@ struct BasicModel {
   // through the general phase laws (docs/theory.md 7).
   bool is_harmonic_coulomb() const {
     return stiffness == 0 && damping == 0 && force_offset == 0 && harmonics.empty() &&
-           static_limit() == friction;
+           static_limit() == friction && !ground_motion;
   }
 
-  // The driving force F(t) (without the spring, damper and friction).
+  // The ground's acceleration a_g(t): linear between the record's samples,
+  // 0 outside them and without a record (at a sample, its value).
+  Real ground_acceleration(const Real& t) const {
+    if (!ground_motion) return Real(0);
+    const std::vector<double>& ts = ground_motion->t;
+    const std::vector<double>& as = ground_motion->a;
+    if (ts.empty() || t < Real(ts.front()) || t > Real(ts.back())) return Real(0);
+    // The last sample time <= t.
+    const std::size_t i = static_cast<std::size_t>(
+        std::upper_bound(ts.begin(), ts.end(), t,
+                         [](const Real& value, double sample) { return value < Real(sample); }) -
+        ts.begin() - 1);
+    if (i + 1 >= ts.size()) return Real(as.back());
+    const Real h = Real(ts[i + 1]) - Real(ts[i]);
+    return Real(as[i]) + (Real(as[i + 1]) - Real(as[i])) * ((t - Real(ts[i])) / h);
+  }
+
+  // The driving force F(t) (without the spring, damper and friction): with a
+  // ground motion, -m a_g(t) included.
   Real force(const Real& t) const {
     using std::sin;
     Real f = force_offset + amplitude * sin(omega * t);
     for (const auto& h : harmonics) f += h.amplitude * sin(h.omega * t + h.phase);
+    if (ground_motion) f -= mass * ground_acceleration(t);
     return f;
   }
 
@@ -101,7 +132,8 @@ struct BasicModel {
       require_finite((name + "amplitude").c_str(), harmonics[i].amplitude);
       require_finite((name + "omega").c_str(), harmonics[i].omega);
       require_finite((name + "phase").c_str(), harmonics[i].phase);
-      if (!(harmonics[i].omega > 0)) fail((name + "omega").c_str(), harmonics[i].omega, "must be > 0");
+      if (!(harmonics[i].omega > 0))
+        fail((name + "omega").c_str(), harmonics[i].omega, "must be > 0");
       // Beyond this the phase is reduced mod 2 pi to garbage (and means nothing:
       // the same limit as for w t, docs/theory.md 4.9).
       using std::fabs;
@@ -121,6 +153,12 @@ struct BasicModel {
            ("must be >= the sliding friction R = " + text_of(friction)).c_str());
     if (!(stiffness >= 0)) fail("stiffness", stiffness, "must be >= 0");
     if (!(damping >= 0)) fail("damping", damping, "must be >= 0");
+    if (ground_motion) ground_motion->validate();
+    if (one_way && !ground_motion)
+      throw InvalidInput("one_way", "true",
+                         "applies to a block under a ground motion (give a record)");
+    if (one_way && v0 < 0)
+      fail("v0", v0, "must be >= 0 for a one-way block (it never moves towards negative x)");
   }
 
  private:
@@ -149,10 +187,13 @@ BasicModel<To> model_cast(const BasicModel<From>& m) {
   r.stiffness = To(m.stiffness);
   r.damping = To(m.damping);
   r.force_offset = To(m.force_offset);
-  for (const auto& h : m.harmonics) r.harmonics.push_back({To(h.amplitude), To(h.omega), To(h.phase)});
+  for (const auto& h : m.harmonics)
+    r.harmonics.push_back({To(h.amplitude), To(h.omega), To(h.phase)});
   r.x0 = To(m.x0);
   r.v0 = To(m.v0);
   r.t0 = To(m.t0);
+  r.ground_motion = m.ground_motion;
+  r.one_way = m.one_way;
   return r;
 }
 

@@ -16,16 +16,19 @@
 #include "laws/harmonic_coulomb/phase_formula.hpp"
 #include "laws/linear_oscillator/family.hpp"
 #include "laws/linear_oscillator/phase_formula.hpp"
+#include "laws/rigid_block_record/family.hpp"
+#include "laws/rigid_block_record/phase_formula.hpp"
 
 namespace frictionref {
 namespace detail {
 
 template <class Real>
-std::unique_ptr<EngineCore<Real>> make_engine_core(const BasicModel<Real>& model,
-                                                   const Real& t_end,
+std::unique_ptr<EngineCore<Real>> make_engine_core(const BasicModel<Real>& model, const Real& t_end,
                                                    const SolveOptions& options) {
   if (model.is_harmonic_coulomb())
     return std::make_unique<EventLoop<Real, HarmonicCoulombFamily<Real>>>(model, t_end, options);
+  if (model.ground_motion)
+    return std::make_unique<EventLoop<Real, RigidBlockRecordFamily<Real>>>(model, t_end, options);
   return std::make_unique<EventLoop<Real, LinearOscillatorFamily<Real>>>(model, t_end, options);
 }
 
@@ -34,6 +37,7 @@ std::unique_ptr<const PhaseFormula<Real>> make_phase_formula(const BasicModel<Re
                                                              const BasicPhase<Real>& phase) {
   if (model.is_harmonic_coulomb())
     return std::make_unique<HarmonicCoulombFormula<Real>>(model, phase);
+  if (model.ground_motion) return std::make_unique<RigidBlockRecordFormula<Real>>(model, phase);
   return std::make_unique<LinearOscillatorFormula<Real>>(model, phase);
 }
 
@@ -49,8 +53,8 @@ std::string BasicSummary<Real>::brief_report() const {
        << " reversals=" << reversals << " breakaways=" << breakaways
        << " merged_sticks=" << merged_sticks << " touches=" << touches
        << " sign_tests=" << sign_tests << " root_function_calls=" << root_function_calls
-       << " predicted_stops=" << predicted_stops << " t=" << final_state.t
-       << " x=" << final_state.x << " v=" << final_state.v;
+       << " predicted_stops=" << predicted_stops << " t=" << final_state.t << " x=" << final_state.x
+       << " v=" << final_state.v;
   return text.str();
 }
 
@@ -88,10 +92,9 @@ const BasicPhase<Real>& BasicSolution<Real>::phase_at(const Real& t) const {
   if (phases.empty() || !(t >= phases.front().t_begin) || !(t <= phases.back().t_end))
     throw InvalidInput("t", detail::to_text(t), "must lie within [t0, t_end] of the solution");
   // First phase whose t_end > t; the last phase also owns its t_end.
-  auto it = std::upper_bound(phases.begin(), phases.end(), t,
-                             [](const Real& value, const BasicPhase<Real>& p) {
-                               return value < p.t_end;
-                             });
+  auto it = std::upper_bound(
+      phases.begin(), phases.end(), t,
+      [](const Real& value, const BasicPhase<Real>& p) { return value < p.t_end; });
   if (it == phases.end()) --it;
   return *it;
 }

@@ -1,0 +1,154 @@
+// The exact engine for a rigid block under a ground motion (docs/theory.md 8):
+// cases solved by hand (every input and every event exact in binary, so the
+// expected values are exact), the one-way rule, static friction, the rules at
+// the record's ends, dense output, and the refusals.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "expect_invalid.hpp"
+#include "frictionref/exact_engine.hpp"
+#include "frictionref/ground_motion.hpp"
+#include "frictionref/model.hpp"
+
+namespace frictionref {
+namespace {
+
+using testing::expect_invalid;
+
+std::shared_ptr<const GroundMotion> record(std::vector<double> t, std::vector<double> a) {
+  auto r = std::make_shared<GroundMotion>();
+  r->t = std::move(t);
+  r->a = std::move(a);
+  r->file = "hand-made";
+  r->npts = r->t.size();
+  return r;
+}
+
+// A block of mass 1 with friction R (static Rs) under `ground`; no harmonic.
+Model block(std::shared_ptr<const GroundMotion> ground, double friction,
+            std::optional<double> static_friction = std::nullopt) {
+  Model m;
+  m.amplitude = 0;
+  m.friction = friction;
+  m.static_friction = static_friction;
+  m.ground_motion = std::move(ground);
+  return m;
+}
+
+// a_g = -3 for 0 <= t <= 2 (N = 3 > R = 1): v' = 2 until t = 2 (v = 4, x = 4),
+// then a_g = 0: v' = -1, the block stops at t = 6 at x = 4 + 4 * 4 - 16 / 2 = 12.
+TEST(RigidBlockRecord, ConstantPulseThenRest) {
+  const Solution s = solve(block(record({0, 2}, {-3, -3}), 1), 10.0);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  ASSERT_EQ(s.phases.size(), 2u) << s.summary.brief_report();
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::slip_forward);
+  EXPECT_EQ(s.phases[0].t_begin, 0.0);
+  EXPECT_EQ(s.phases[0].t_end, 6.0);
+  EXPECT_EQ(s.phases[0].x_end, 12.0);
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::stick);
+  EXPECT_EQ(s.phases[1].t_end, 10.0);
+  // Dense output: x(2) = 4, v(2) = 4; x(1) = 1; a = 2 before t = 2, -1 after.
+  EXPECT_EQ(s.state_at(2.0).x, 4.0);
+  EXPECT_EQ(s.state_at(2.0).v, 4.0);
+  EXPECT_EQ(s.state_at(1.0).x, 1.0);
+  EXPECT_EQ(s.state_at(1.0).a, 2.0);
+  EXPECT_EQ(s.state_at(3.0).a, -1.0);
+  EXPECT_EQ(s.state_at(3.0).v, 3.0);
+}
+
+// a_g falls linearly from 0 to -4 over [0, 2], so N = 2 t: the block breaks
+// away at t = 0.5 (N = R = 1) with v = (t - 1/2)^2, x = (t - 1/2)^3 / 3; at
+// t = 2, v = 9/4 and x = 9/8; then N = 0 (a_g jumps back to 0 after the last
+// sample): v' = -1, a stop at t = 4.25, x = 9/8 + 81/32.
+TEST(RigidBlockRecord, RampBreakawayAndJumpAtTheEnd) {
+  const Solution s = solve(block(record({0, 2}, {0, -4}), 1), 5.0);
+  ASSERT_EQ(s.phases.size(), 3u) << s.summary.brief_report();
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::stick);
+  EXPECT_EQ(s.phases[0].t_end, 0.5);
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::slip_forward);
+  EXPECT_EQ(s.phases[1].t_end, 4.25);
+  EXPECT_EQ(s.phases[1].x_end, 9.0 / 8 + 81.0 / 32);
+  EXPECT_EQ(s.state_at(2.0).v, 2.25);
+  EXPECT_EQ(s.state_at(2.0).x, 1.125);
+  EXPECT_EQ(s.state_at(1.5).v, 1.0);
+  EXPECT_EQ(s.phases[2].kind, PhaseKind::stick);
+  EXPECT_EQ(s.summary.breakaways, 1u);
+  EXPECT_EQ(s.summary.stops, 1u);
+}
+
+// Static friction: N = 2 t must exceed Rs = 2 (t = 1) before the block moves;
+// then it slides with R = 1: v = (t^2 - 1) - (t - 1) = (t - 1) t, v(2) = 2,
+// x(2) = [t^3/3 - t^2/2] from 1 to 2 = 5/6. After the record, v' = -1: the
+// stop at t = 4, x = 5/6 + 2.
+TEST(RigidBlockRecord, StaticFrictionHoldsUntilRs) {
+  const Solution s = solve(block(record({0, 2}, {0, -4}), 1, 2.0), 6.0);
+  ASSERT_EQ(s.phases.size(), 3u) << s.summary.brief_report();
+  EXPECT_EQ(s.phases[0].t_end, 1.0);
+  EXPECT_EQ(s.phases[1].t_end, 4.0);
+  EXPECT_NEAR(s.phases[1].x_end, 5.0 / 6 + 2, 4e-16);
+  EXPECT_EQ(s.state_at(2.0).v, 2.0);
+}
+
+// A symmetric triangle wave of the ground, peak 4, friction 1: two-way the
+// block slides both ways; one-way only forwards (towards positive x).
+TEST(RigidBlockRecord, OneWayNeverMovesBackwards) {
+  const auto wave = record({0, 1, 2, 3, 4}, {0, -4, 0, 4, 0});
+  Model two_way = block(wave, 1);
+  Model one_way = two_way;
+  one_way.one_way = true;
+  const Solution both = solve(two_way, 8.0);
+  const Solution down = solve(one_way, 8.0);
+  EXPECT_GT(both.summary.count(PhaseKind::slip_backward), 0u) << both.summary.brief_report();
+  EXPECT_EQ(down.summary.count(PhaseKind::slip_forward), 1u) << down.summary.brief_report();
+  EXPECT_EQ(down.summary.count(PhaseKind::slip_backward), 0u);
+  // The forward slip: N = 4 t breaks away at t = 1/4, v = 2 t^2 - t + 1/8 up
+  // to t = 1 (9/8); then N = 8 - 4 t, v = 9/8 + 3 h - 2 h^2 (h = t - 1), 17/8
+  // at t = 2; then N = -4 u (u = t - 2), v = 17/8 - u - 2 u^2, which stops
+  // at u = (sqrt(18) - 1) / 4, where N = -3.24 pushes back: one-way, it stays.
+  const double stop = 2 + (std::sqrt(18.0) - 1) / 4;
+  ASSERT_EQ(down.phases.size(), 3u);
+  EXPECT_NEAR(down.phases[1].t_end, stop, 4e-16 * stop);
+  for (const Phase& p : down.phases) EXPECT_GE(p.x_end, p.x_begin);
+}
+
+// A record that starts late: zero ground acceleration before its first
+// sample, and a jump to it there.
+TEST(RigidBlockRecord, QuietBeforeTheFirstSample) {
+  const Solution s = solve(block(record({1, 2}, {-3, -3}), 1), 3.0);
+  ASSERT_GE(s.phases.size(), 2u);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::stick);
+  EXPECT_EQ(s.phases[0].t_end, 1.0);  // the jump to N = 3 > 1 at the first sample
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::slip_forward);
+}
+
+TEST(RigidBlockRecord, RefusesWhatItDoesNotSolveYet) {
+  Model m = block(record({0, 1}, {1, 1}), 0.5);
+  m.stiffness = 1;
+  EXPECT_EQ(expect_invalid([&] { solve(m, 1.0); }).parameter(), "stiffness");
+  m.stiffness = 0;
+  m.amplitude = 1;
+  EXPECT_EQ(expect_invalid([&] { solve(m, 1.0); }).parameter(), "amplitude");
+  Model no_record;
+  no_record.one_way = true;
+  EXPECT_EQ(expect_invalid([&] { no_record.validate(); }).parameter(), "one_way");
+  Model backwards = block(record({0, 1}, {1, 1}), 0.5);
+  backwards.one_way = true;
+  backwards.v0 = -1;
+  EXPECT_EQ(expect_invalid([&] { backwards.validate(); }).parameter(), "v0");
+}
+
+TEST(RigidBlockRecord, ModelForceIncludesTheRecord) {
+  const Model m = block(record({0, 2}, {0, -4}), 1);
+  EXPECT_EQ(m.ground_acceleration(1.0), -2.0);
+  EXPECT_EQ(m.ground_acceleration(-1.0), 0.0);
+  EXPECT_EQ(m.ground_acceleration(2.0), -4.0);
+  EXPECT_EQ(m.ground_acceleration(2.5), 0.0);
+  EXPECT_EQ(m.force(1.0), 2.0);
+  EXPECT_FALSE(m.is_harmonic_coulomb());
+}
+
+}  // namespace
+}  // namespace frictionref
