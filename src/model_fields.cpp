@@ -16,7 +16,13 @@ std::string model_fields(const Model& model, std::string (*number)(double)) {
   if (model.force_offset != 0) fields += " force_offset=" + number(model.force_offset);
   for (const Harmonic& h : model.harmonics)
     fields += " harmonic=" + number(h.amplitude) + "," + number(h.omega) + "," + number(h.phase);
-  return fields + " x0=" + number(model.x0) + " v0=" + number(model.v0) + " t0=" + number(model.t0);
+  fields += " x0=" + number(model.x0) + " v0=" + number(model.v0) + " t0=" + number(model.t0);
+  // A ground motion: its file (the '# record' lines of a CSV say the rest).
+  if (model.ground_motion)
+    fields += " ground_accel=" + model.ground_motion->file +
+              " sha256=" + model.ground_motion->sha256.substr(0, 16) +
+              (model.one_way ? " one_way=true" : "");
+  return fields;
 }
 
 }  // namespace frictionref

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 
 namespace frictionref {
 namespace {
@@ -54,7 +55,80 @@ void validate_naming(const Model& model, const TypedInputs& inputs) {
   }
 }
 
+// --yield-accel (R = m KY g) and the record of --ground-accel, attached to
+// `model`. Errors name the option as typed.
+void add_ground_motion(const ModelInput& input, Model& model) {
+  const double gravity = input.gravity_value();
+  if (input.yield_accel) {
+    const double ky = number_from_text({"--yield-accel", *input.yield_accel});
+    if (!std::isfinite(ky) || !(ky >= 0))
+      refuse("--yield-accel", *input.yield_accel, "must be a finite number >= 0 (in g)");
+    model.friction = model.mass * ky * gravity;
+    if (std::isfinite(model.mass) && !std::isfinite(model.friction))
+      refuse("--yield-accel", *input.yield_accel, "R = m KY g must be a finite number");
+  }
+  if (input.one_way && !input.ground_accel)
+    throw MissingInput("--one-way", "applies to a ground motion: give --ground-accel FILE");
+  model.ground_motion = input.record();
+  model.one_way = input.one_way;
+}
+
 }  // namespace
+
+double ModelInput::gravity_value() const {
+  const double value = number_from_text({"--gravity", gravity});
+  if (!std::isfinite(value) || !(value > 0))
+    refuse("--gravity", gravity,
+           "must be a finite number > 0 (standard gravity in the output's length unit per s^2)");
+  return value;
+}
+
+std::shared_ptr<const GroundMotion> ModelInput::record() const {
+  const auto needs_record = [&](const char* option, bool given) {
+    if (given && !ground_accel)
+      throw MissingInput(option, "applies to a ground motion: give " + record_option + " FILE");
+  };
+  needs_record("--record-dt", record_dt.has_value());
+  needs_record("--accel-units", accel_units.has_value());
+  needs_record("--scale", scale.has_value());
+  needs_record("--target-pga", target_pga.has_value());
+  needs_record("--inverse", inverse);
+  GroundMotionReadOptions read;
+  read.gravity = gravity_value();
+  if (!ground_accel) return nullptr;
+  read.inverse = inverse;
+  const auto positive = [](const char* option, const std::string& text, const char* what) {
+    const double value = number_from_text({option, text});
+    if (!std::isfinite(value) || !(value > 0))
+      refuse(option, text, std::string("must be a finite number > 0 (") + what + ")");
+    return value;
+  };
+  if (record_dt) read.record_dt = positive("--record-dt", *record_dt, "seconds");
+  if (scale) read.scale = positive("--scale", *scale, "a factor; --inverse negates");
+  if (target_pga)
+    read.target_pga = positive("--target-pga", *target_pga, "the PGA to scale to, in g");
+  if (read.scale && read.target_pga)
+    refuse("--target-pga", *target_pga,
+           "cannot be given with --scale: choose one way of scaling the record");
+  if (accel_units) {
+    read.units = accel_units_from_string(*accel_units);
+    if (!read.units)
+      refuse("--accel-units", *accel_units, "must be g, m/s2, cm/s2, ft/s2 or in/s2");
+  }
+  try {
+    return std::make_shared<const GroundMotion>(read_ground_motion(*ground_accel, read));
+  } catch (const InvalidInput& error) {
+    if (error.parameter() == "file") refuse(record_option, error.value(), error.rule());
+    if (error.parameter() == "accel_units")
+      refuse("--accel-units", accel_units.value_or("g"), error.rule());
+    if (error.parameter() == "record_dt")
+      refuse("--record-dt", record_dt.value_or(""), error.rule());
+    if (error.parameter() == "target_pga")
+      refuse("--target-pga", target_pga.value_or(""), error.rule());
+    if (error.parameter() == "scale") refuse("--scale", scale.value_or(""), error.rule());
+    throw;
+  }
+}
 
 double number_from_text(const TypedNumber& number) {
   const char* begin = number.text.c_str();
@@ -81,8 +155,9 @@ TypedInputs ModelInput::typed_inputs() const {
       {"omega", {"--omega", omega}}, {"x0", {"--x0", x0}},
       {"v0", {"--v0", v0}},          {"t0", {"--t0", t0}},
   };
-  inputs["friction"] = lambda ? TypedNumber{"--lambda", *lambda}
-                              : TypedNumber{"--friction", friction.value_or("0")};
+  inputs["friction"] = lambda        ? TypedNumber{"--lambda", *lambda}
+                       : yield_accel ? TypedNumber{"--yield-accel", *yield_accel}
+                                     : TypedNumber{"--friction", friction.value_or("0")};
   if (static_lambda) {
     inputs["static_friction"] = {"--static-lambda", *static_lambda};
   } else if (static_friction) {
@@ -100,7 +175,9 @@ TypedInputs ModelInput::typed_inputs() const {
 }
 
 Model ModelInput::model() const {
-  if (!friction && !lambda && friction_required)
+  if (yield_accel && (friction || lambda))
+    throw MissingInput("--yield-accel", "cannot be given with --friction or --lambda (R = m KY g)");
+  if (!friction && !lambda && !yield_accel && friction_required)
     throw MissingInput("--friction/--lambda", "exactly one is required (R = lambda * B)");
   const TypedInputs inputs = typed_inputs();
   Model model;
@@ -120,7 +197,9 @@ Model ModelInput::model() const {
       static_input != inputs.end() ? number_from_text(static_input->second) : 0.0;
   // LS is Rs / B: checked as itself before it becomes Rs.
   if (static_lambda) {
-    const auto fail = [&](const std::string& rule) { refuse("--static-lambda", *static_lambda, rule); };
+    const auto fail = [&](const std::string& rule) {
+      refuse("--static-lambda", *static_lambda, rule);
+    };
     if (!std::isfinite(static_value)) fail("must be a finite number");
     if (!(static_value >= 0)) fail("must be >= 0");
     if (!(model.amplitude > 0) && std::isfinite(model.amplitude) && model.amplitude >= 0)
@@ -134,6 +213,7 @@ Model ModelInput::model() const {
 
   if (!lambda) {
     model.friction = friction_or_lambda;
+    add_ground_motion(*this, model);
     validate_naming(model, inputs);
     return model;
   }
@@ -146,6 +226,7 @@ Model ModelInput::model() const {
   model.friction = value * model.amplitude;
   if (std::isfinite(model.amplitude) && !std::isfinite(model.friction))
     fail("R = lambda * B must be a finite number");
+  add_ground_motion(*this, model);
   validate_naming(model, inputs);
   if (!(model.amplitude > 0)) fail("needs --amplitude > 0 (R = lambda * B)");
   return model;

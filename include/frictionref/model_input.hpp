@@ -8,6 +8,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -67,6 +68,30 @@ struct ModelInput {
   std::string t0 = "0";
   // Neither friction nor lambda: refused when true, R = 0 when false (map, sweep).
   bool friction_required = true;
+
+  // A ground motion (ground_motion.hpp, docs/cli.md "Ground-motion records"):
+  // the record's file and how to read it. The options after ground_accel
+  // need it, except gravity (also the unit of --yield-accel).
+  std::optional<std::string> ground_accel;  // --ground-accel FILE
+  std::optional<std::string> record_dt;     // --record-dt H: one column at this step [s]
+  std::optional<std::string> accel_units;   // --accel-units g|m/s2|cm/s2|ft/s2|in/s2
+  std::string gravity = "9.80665";          // --gravity G [length/s^2]: the output's length unit
+  std::optional<std::string> scale;         // --scale S
+  std::optional<std::string> target_pga;    // --target-pga P [g]
+  bool inverse = false;                     // --inverse: the record negated
+  bool one_way = false;                     // --one-way: no motion towards negative x
+  // --yield-accel KY [g]: R = m KY G, instead of --friction / --lambda.
+  std::optional<std::string> yield_accel;
+  // The option that named the record's file, for messages about the file
+  // (`newmark` reads its records with --record).
+  std::string record_option = "--ground-accel";
+
+  // --gravity as a number: finite, > 0; throws InvalidInput naming it.
+  double gravity_value() const;
+  // The record of ground_accel, read with the options above (null without
+  // one). Throws InvalidInput naming the option (record_option for the file
+  // itself) or the file and line.
+  std::shared_ptr<const GroundMotion> record() const;
 
   // The typed model fields by library field name (friction -> --lambda if
   // given; harmonics[i].amplitude/omega/phase -> the i-th --harmonic), for

@@ -48,10 +48,30 @@ std::string command_line(int argc, const char* const* argv) {
   return line;
 }
 
+std::vector<std::string> record_metadata(const GroundMotion& record) {
+  std::vector<std::string> lines;
+  lines.push_back(
+      fmt::format("record: {} ({}), sha256 {}", record.file, record.format, record.sha256));
+  for (const std::string& line : record.header) lines.push_back("record header: " + line);
+  lines.push_back(fmt::format(
+      "record: npts={} dt={} t={}..{} pga_as_read={} {} scaling={} factor={} gravity={}",
+      record.npts, record.dt ? number(*record.dt) : std::string("non-uniform"),
+      number(record.t.front()), number(record.t.back()), number(record.pga_as_read),
+      to_string(record.units), record.scaling, number(record.factor), number(record.gravity)));
+  lines.push_back(
+      "record: the ground acceleration is linear between samples and 0 before the first and "
+      "after the last; x and v are relative to the ground");
+  for (const std::string& note : record.notes) lines.push_back("record note: " + note);
+  return lines;
+}
+
 void write_metadata(std::FILE* out, const Model& model, const std::string& command,
                     const std::vector<std::string>& extra_lines) {
   fmt::print(out, "# frictionref {}\n# model: {}\n# command: {}\n", version,
              model_fields(model, number), command);
+  if (model.ground_motion)
+    for (const std::string& line : record_metadata(*model.ground_motion))
+      fmt::print(out, "# {}\n", line);
   for (const std::string& line : extra_lines) fmt::print(out, "# {}\n", line);
 }
 

@@ -16,13 +16,17 @@ namespace frictionref::cli {
 // Shortest round-trip form: 0.3, 1, 1e-05, -0, inf, nan.
 std::string number(double value);
 
-
 // The command line as one shell-quoted line, for "# command:" (re-runnable):
 // "frictionref <args>", argv[0] replaced by the program's name.
 std::string command_line(int argc, const char* const* argv);
 
-// "# frictionref <version>", "# model: ...", "# command: ...", then one
-// "# <line>" per extra line (e.g. "grid: ..."). Comment lines precede the header.
+// The provenance of a ground motion, one line each: file, format, SHA-256;
+// the .AT2 header; NPTS, dt, PGA as read, the scaling; the interpolation rule.
+std::vector<std::string> record_metadata(const GroundMotion& record);
+
+// "# frictionref <version>", "# model: ...", "# command: ...", the record's
+// lines (record_metadata) if the model has one, then one "# <line>" per extra
+// line (e.g. "grid: ..."). Comment lines precede the header.
 void write_metadata(std::FILE* out, const Model& model, const std::string& command,
                     const std::vector<std::string>& extra_lines);
 

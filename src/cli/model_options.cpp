@@ -35,17 +35,24 @@ void ModelOptions::add_to(CLI::App& command, bool friction_required, const Selec
     return numeric(command.add_option(name, text, help))->type_name(type)->group(group);
   };
   add("--mass", mass_, "mass m [mass]; > 0", "M")->capture_default_str();
-  add("--amplitude", amplitude_, "amplitude B of the force B sin(w t) [force]; >= 0", "B")
-      ->capture_default_str();
+  amplitude_option_ =
+      add("--amplitude", amplitude_,
+          "amplitude B of the force B sin(w t) [force]; >= 0 (0 by default with --ground-accel)",
+          "B")
+          ->capture_default_str();
   add("--omega", omega_, "angular frequency w of the force [rad/time]; > 0", "W")
       ->capture_default_str();
   if (selection.friction) {
     friction_option_ =
         add("--friction", friction_, "Coulomb friction force R [force]; >= 0 (or --lambda)", "R");
-    lambda_option_ = add("--lambda", lambda_,
-                         "friction ratio lambda = R / B [1]; >= 0, needs B > 0 (or --friction)",
-                         "L");
+    lambda_option_ =
+        add("--lambda", lambda_,
+            "friction ratio lambda = R / B [1]; >= 0, needs B > 0 (or --friction)", "L");
     friction_option_->excludes(lambda_option_);
+    yield_accel_option_ = add(
+        "--yield-accel", yield_accel_,
+        "friction as a yield acceleration KY [g]: R = m KY G (G = --gravity; or --friction)", "KY");
+    yield_accel_option_->excludes(friction_option_)->excludes(lambda_option_);
   }
   if (selection.static_friction) {
     static_friction_option_ =
@@ -73,6 +80,45 @@ void ModelOptions::add_to(CLI::App& command, bool friction_required, const Selec
   if (selection.t0)
     add("--t0", t0_, "initial time [time]; the force is B sin(w t), not B sin(w (t - t0))", "T0")
         ->capture_default_str();
+
+  const char* ground =
+      "Ground motion (docs/cli.md: x is then relative to the ground, in s and "
+      "the length unit of --gravity)";
+  ground_accel_option_ =
+      command
+          .add_option("--ground-accel", ground_accel_,
+                      "a record of the ground's acceleration a_g(t), linear between samples, 0 "
+                      "outside; enters as -m a_g(t): PEER .AT2, a time-acceleration table, or one "
+                      "column with --record-dt")
+          ->type_name("FILE")
+          ->group(ground);
+  const auto add_ground = [&](const char* name, std::string& text, const char* help,
+                              const char* type) {
+    return numeric(command.add_option(name, text, help))->type_name(type)->group(ground);
+  };
+  record_dt_option_ =
+      add_ground("--record-dt", record_dt_, "step of a one-column record [s]; > 0", "H");
+  accel_units_option_ = command
+                            .add_option("--accel-units", accel_units_,
+                                        "units of the record's accelerations (default g; an .AT2 "
+                                        "file says G itself)")
+                            ->type_name("g|m/s2|cm/s2|ft/s2|in/s2")
+                            ->group(ground);
+  add_ground("--gravity", gravity_,
+             "standard gravity in the output's length unit per s^2: 9.80665 (metres), 980.665 "
+             "(cm), 32.174 (ft)...; also the unit of --yield-accel",
+             "G")
+      ->capture_default_str();
+  scale_option_ = add_ground("--scale", scale_, "factor on the record's accelerations; > 0", "S");
+  target_pga_option_ =
+      add_ground("--target-pga", target_pga_, "scale the record to this peak [g]; > 0", "P");
+  scale_option_->excludes(target_pga_option_);
+  command.add_flag("--inverse", inverse_, "the record negated (the inverse polarity)")
+      ->group(ground);
+  command
+      .add_flag("--one-way", one_way_,
+                "the block never moves towards negative x (Newmark's downslope block)")
+      ->group(ground);
 }
 
 bool ModelOptions::lambda_given() const { return lambda_option_ && lambda_option_->count() > 0; }
@@ -100,6 +146,20 @@ ModelInput ModelOptions::input() const {
   input.v0 = v0_;
   input.t0 = t0_;
   input.friction_required = friction_required_;
+  const auto given = [](const CLI::Option* option) { return option && option->count() > 0; };
+  if (given(ground_accel_option_)) {
+    input.ground_accel = ground_accel_;
+    // A record drives the block by itself unless a harmonic is asked for.
+    if (!given(amplitude_option_)) input.amplitude = "0";
+  }
+  if (given(record_dt_option_)) input.record_dt = record_dt_;
+  if (given(accel_units_option_)) input.accel_units = accel_units_;
+  input.gravity = gravity_;
+  if (given(scale_option_)) input.scale = scale_;
+  if (given(target_pga_option_)) input.target_pga = target_pga_;
+  input.inverse = inverse_;
+  input.one_way = one_way_;
+  if (given(yield_accel_option_)) input.yield_accel = yield_accel_;
   return input;
 }
 

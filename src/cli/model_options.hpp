@@ -51,10 +51,12 @@ decltype(auto) naming_options(const TypedInputs& inputs, F&& f) {
   }
 }
 
-// --mass --amplitude --omega (--friction | --lambda) [--static-friction |
-// --static-lambda] --stiffness --damping --force-offset --harmonic B,W[,PHI]...
-// --x0 --v0 --t0, bound as text. Register once per command with add_to(); the
-// object must outlive parsing.
+// --mass --amplitude --omega (--friction | --lambda | --yield-accel)
+// [--static-friction | --static-lambda] --stiffness --damping --force-offset
+// --harmonic B,W[,PHI]... --x0 --v0 --t0, and a ground motion: --ground-accel
+// FILE [--record-dt H] [--accel-units U] [--gravity G] [--scale S |
+// --target-pga P] [--inverse] [--one-way]; bound as text. Register once per command with add_to();
+// the object must outlive parsing.
 class ModelOptions {
  public:
   // Which options add_to registers (all by default). A command that sets the
@@ -98,6 +100,16 @@ class ModelOptions {
   std::string x0_ = "0";
   std::string v0_ = "0";
   std::string t0_ = "0";
+  std::string ground_accel_, record_dt_, accel_units_, gravity_ = "9.80665", scale_, target_pga_,
+                                                       yield_accel_;
+  bool inverse_ = false, one_way_ = false;
+  CLI::Option* amplitude_option_ = nullptr;
+  CLI::Option* ground_accel_option_ = nullptr;
+  CLI::Option* record_dt_option_ = nullptr;
+  CLI::Option* accel_units_option_ = nullptr;
+  CLI::Option* scale_option_ = nullptr;
+  CLI::Option* target_pga_option_ = nullptr;
+  CLI::Option* yield_accel_option_ = nullptr;
   CLI::Option* friction_option_ = nullptr;
   CLI::Option* lambda_option_ = nullptr;
   CLI::Option* static_friction_option_ = nullptr;
