@@ -52,5 +52,6 @@ Command add_convergence_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_map_command(CLI::App& app);
 Command add_merge_command(CLI::App& app);
+Command add_newmark_command(CLI::App& app);
 
 }  // namespace frictionref::cli

@@ -23,7 +23,7 @@ namespace {
 
 constexpr const char* usage =
     "usage: frictionref "
-    "{events|curve|classify|reproduce|stiff|compare|report|convergence|sweep|map|merge} "
+    "{events|curve|classify|reproduce|stiff|compare|report|convergence|sweep|map|merge|newmark} "
     "[options] (see frictionref --help)";
 
 // Scripts read stderr line by line: whatever the message, it is one line.
@@ -81,13 +81,15 @@ int run(int argc, char** argv) {
       "  frictionref report --lambda 0.7 --candidate stiff.csv -o report.html\n"
       "  frictionref convergence --lambda 0.7 --format markdown\n"
       "  frictionref sweep --lambda-from 0 --lambda-to 1.2 --points 1201 --plot sweep.svg\n"
+      "  frictionref newmark --record data/records/synthetic/pulse-train.AT2 --yield-accel "
+      "0.05,0.1,0.2\n"
       "'frictionref <command> --help' explains each command; docs/cli.md has the formats.");
 
   const std::vector<Command> commands{
       add_events_command(app),   add_curve_command(app),       add_reproduce_command(app),
       add_classify_command(app), add_stiff_command(app),       add_compare_command(app),
       add_report_command(app),   add_convergence_command(app), add_sweep_command(app),
-      add_map_command(app),      add_merge_command(app)};
+      add_map_command(app),      add_merge_command(app),       add_newmark_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& help_or_version) {
