@@ -56,7 +56,7 @@ class RigidBlockRecordFamily {
 
   RigidBlockRecordFamily(const BasicModel<Real>& model, const Real& t_end, const Work& tau0,
                          const Work& tau_end, BasicSummary<Real>& summary)
-      : net_((require_rigid_block_record(model), *model.ground_motion), Work(model.omega),
+      : net_((require_rigid_block_record(model), model.ground_motion), Work(model.omega),
              Work(model.force_offset) / Work(model.mass)),
         omega_(model.omega),
         mu_(Work(model.friction) / Work(model.mass)),

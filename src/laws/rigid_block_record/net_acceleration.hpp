@@ -14,7 +14,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
-#include <vector>
+#include <memory>
+#include <utility>
 
 #include "frictionref/ground_motion.hpp"
 
@@ -32,31 +33,48 @@ class NetAcceleration {
     Work slope;  // per unit of tau
   };
 
-  NetAcceleration(const GroundMotion& record, const Work& omega, const Work& offset)
-      : offset_(offset), tau_(record.t.size()), a_(record.a.size()) {
-    for (std::size_t i = 0; i < tau_.size(); ++i) {
-      tau_[i] = omega * Work(record.t[i]);
-      a_[i] = Work(record.a[i]);
-    }
-  }
+  // Reads the record's samples where they are (shared, so that an
+  // evaluator outliving the caller's model keeps them): a dense-output
+  // evaluator is built per slip, and copying 10^4 samples each time would
+  // cost more than the slip itself.
+  NetAcceleration(std::shared_ptr<const GroundMotion> record, const Work& omega,
+                  const Work& offset)
+      : record_(std::move(record)),
+        offset_(offset),
+        omega_(omega),
+        t_(record_->t.data()),
+        a_(record_->a.data()),
+        n_(record_->t.size()) {}
 
-  std::size_t segments() const { return tau_.size() + 1; }
+  std::size_t segments() const { return n_ + 1; }
 
   // The segment that holds tau (the right one at a sample time).
   std::size_t segment_at(const Work& tau) const {
-    return static_cast<std::size_t>(std::upper_bound(tau_.begin(), tau_.end(), tau) - tau_.begin());
+    std::size_t low = 0, count = n_;  // upper_bound over tau_i = w t_i
+    while (count > 0) {
+      const std::size_t step = count / 2;
+      if (!(tau < tau_at(low + step))) {
+        low += step + 1;
+        count -= step + 1;
+      } else {
+        count = step;
+      }
+    }
+    return low;
   }
 
   Segment segment(std::size_t k) const {
     const Work infinity = std::numeric_limits<Work>::infinity();
-    const std::size_t n = tau_.size();
-    if (k == 0) return {0, -infinity, tau_.front(), offset_, Work(0)};
-    if (k >= n) return {n, tau_.back(), infinity, offset_, Work(0)};
+    const std::size_t n = n_;
+    if (k == 0) return {0, -infinity, tau_at(0), offset_, Work(0)};
+    if (k >= n) return {n, tau_at(n - 1), infinity, offset_, Work(0)};
     const std::size_t i = k - 1;
+    const Work a0(a_[i]), a1(a_[i + 1]);
+    const Work tau0 = tau_at(i), tau1 = tau_at(i + 1);
     // The slope from the samples' difference, so g at the segment's end is
     // offset - a_{i+1} to rounding.
-    const Work slope = -(a_[i + 1] - a_[i]) / (tau_[i + 1] - tau_[i]);
-    return {k, tau_[i], tau_[i + 1], offset_ - a_[i], slope};
+    const Work slope = -(a1 - a0) / (tau1 - tau0);
+    return {k, tau0, tau1, offset_ - a0, slope};
   }
 
   // g at tau on segment s (tau in [s.begin, s.end]; the left limit at s.end).
@@ -66,9 +84,14 @@ class NetAcceleration {
   }
 
  private:
-  Work offset_;            // F0 / m
-  std::vector<Work> tau_;  // w t_i
-  std::vector<Work> a_;    // a_g at tau_i
+  Work tau_at(std::size_t i) const { return omega_ * Work(t_[i]); }
+
+  std::shared_ptr<const GroundMotion> record_;
+  Work offset_;       // F0 / m
+  Work omega_;        // tau = w t
+  const double* t_;   // the samples' times
+  const double* a_;   // a_g at t_i
+  std::size_t n_;
 };
 
 }  // namespace frictionref::detail

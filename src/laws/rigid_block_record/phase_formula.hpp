@@ -22,7 +22,7 @@ class RigidBlockRecordFormula final : public PhaseFormula<Real> {
 
   RigidBlockRecordFormula(const BasicModel<Real>& model, const BasicPhase<Real>& phase)
       : phase_(phase),
-        net_(*model.ground_motion, Work(model.omega), Work(model.force_offset) / Work(model.mass)),
+        net_(model.ground_motion, Work(model.omega), Work(model.force_offset) / Work(model.mass)),
         omega_(model.omega),
         sign_(phase.kind == PhaseKind::slip_forward ? 1 : -1) {
     if (phase.kind == PhaseKind::stick) return;
