@@ -189,6 +189,14 @@ NewmarkResult analysis(const std::shared_ptr<const GroundMotion>& as_read,
   return result;
 }
 
+// SLAMMER integrates at the record's step.
+void require_uniform_step(const GroundMotion& record) {
+  if (!record.dt)
+    throw InvalidInput("record", record.file,
+                       "has no uniform step (a table of times); SLAMMER's algorithm integrates "
+                       "at the record's step: give an .AT2 file or one column with --record-dt");
+}
+
 // The exact method's normal polarity and SLAMMER's inverse one run on the
 // record negated.
 bool needs_negated(const NewmarkOptions& options) {
@@ -206,9 +214,15 @@ NewmarkResult newmark_analysis(const GroundMotion& record, double yield_accel_g,
   options.yield_accels_g = {yield_accel_g};
   options.polarities = {polarity};
   options.method = method;
-  options.one_way = one_way;
-  options.threads = 1;
-  return newmark_batch({std::make_shared<const GroundMotion>(record)}, options).front();
+  options.validate();
+  record.validate();
+  // In the calling thread: no pool for one run. The record as read is not
+  // copied: a pointer that does not own it, alive for this call.
+  const std::shared_ptr<const GroundMotion> as_read(std::shared_ptr<const GroundMotion>(),
+                                                    &record);
+  const auto negative = needs_negated(options) ? negated(record) : nullptr;
+  if (method == NewmarkMethod::slammer) require_uniform_step(record);
+  return analysis(as_read, negative, yield_accel_g, one_way, polarity, method);
 }
 
 std::vector<NewmarkResult> newmark_batch(
@@ -218,10 +232,7 @@ std::vector<NewmarkResult> newmark_batch(
   for (const auto& record : records) {
     if (!record) throw InvalidInput("records", "null", "every record must be given");
     record->validate();
-    if (options.method == NewmarkMethod::slammer && !record->dt)
-      throw InvalidInput("record", record->file,
-                         "has no uniform step (a table of times); SLAMMER's algorithm integrates "
-                         "at the record's step: give an .AT2 file or one column with --record-dt");
+    if (options.method == NewmarkMethod::slammer) require_uniform_step(*record);
   }
   const std::size_t per_record = options.yield_accels_g.size() * options.polarities.size();
   const std::size_t count = records.size() * per_record;
