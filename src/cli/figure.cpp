@@ -168,6 +168,8 @@ std::string script(const Figure& figure, const std::string& data, const std::str
                               : "with lines lw 3 lc rgb '#000000'";
       } else if (series.role == Series::Role::marker) {
         style = "with points pt 6 ps 1.2 lc rgb '#555555'";
+      } else if (series.role == Series::Role::level) {
+        style = "with lines dt 2 lw 1.5 lc rgb '#555555'";
       } else {
         const char* c = candidate_colours[colour++ % 5];
         style = series.points    ? fmt::format("with points pt 7 ps 0.4 lc rgb '{}'", c)

@@ -15,7 +15,8 @@ struct Series {
   std::vector<double> x, y;  // same length
   // How it is drawn. The exact solution is "reference": a thick black line;
   // other series cycle through thinner coloured lines (or points).
-  enum class Role { reference, candidate, marker } role = Role::candidate;
+  // "level": a dashed grey line, for a threshold (the yield level).
+  enum class Role { reference, candidate, marker, level } role = Role::candidate;
   bool points = false;       // points instead of a line
   bool markers = false;      // a line with a marker at every point (sparse data)
 };

@@ -283,7 +283,7 @@ Figure history_figure(const std::shared_ptr<const GroundMotion>& record, double 
   Series level{fmt::format("KY = {} g", number(ky)),
                {record->t.front(), t_plot_end},
                {ky, ky},
-               Series::Role::marker};
+               Series::Role::level};
   ground.push_back(level);
   if (!options.one_way) {
     Series minus = level;
