@@ -112,6 +112,10 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
   model.validate();
   options.validate();
   history.validate();
+  model.refuse_ground_motion(
+      "is not taken by compare yet: its velocities are judged relative to B/(m w), which a "
+      "record does not have (use newmark --method slammer, or events or curve and compare "
+      "by hand)");
   if (!(model.amplitude > 0))
     throw InvalidInput("amplitude", text(model.amplitude),
                        "must be > 0 to compare (velocities are judged relative to B/(m w))");

@@ -155,6 +155,8 @@ TypedInputs ModelInput::typed_inputs() const {
       {"omega", {"--omega", omega}}, {"x0", {"--x0", x0}},
       {"v0", {"--v0", v0}},          {"t0", {"--t0", t0}},
   };
+  if (ground_accel) inputs["ground_motion"] = {record_option, *ground_accel};
+  if (one_way) inputs["one_way"] = {"--one-way", "given"};
   inputs["friction"] = lambda        ? TypedNumber{"--lambda", *lambda}
                        : yield_accel ? TypedNumber{"--yield-accel", *yield_accel}
                                      : TypedNumber{"--friction", friction.value_or("0")};

@@ -75,6 +75,10 @@ double StiffSpringOptions::step(const Model& model) const {
 
 void StiffSpringOptions::validate(const Model& model) const {
   model.validate();
+  if (model.one_way)
+    throw InvalidInput("one_way", "true",
+                       "the penalty model has no one-way slider: run it two-way, or use newmark "
+                       "--method slammer for a one-way numerical peer");
   require_finite("kf", kf);
   require_finite("dt", dt);
   require_finite("output_dt", output_dt);
@@ -178,6 +182,7 @@ StiffSpringSimulator::StiffSpringSimulator(const Model& model, double t_end,
   const double half_damping = 0.5 * model.damping * dt_ / model.mass;
   damping_scale_ = 1 / (1 + half_damping);
   damping_keep_ = (1 - half_damping) * damping_scale_;
+  ground_ = static_cast<bool>(model.ground_motion);
   for (const Harmonic& h : model.harmonics) {
     harmonics_.push_back({h.amplitude * dt2_over_m, h.omega, h.phase, 0, 1, std::sin(h.omega * dt_),
                           std::cos(h.omega * dt_)});
@@ -251,6 +256,8 @@ void StiffSpringSimulator::take_step() {
   } else {
     double load = force_increment_ * sin_ + offset_increment_ - stiffness_increment_ * x_ + kick;
     for (const Rotation& h : harmonics_) load += h.increment * h.sin;
+    // The record's force -m a_g, linear between samples, times dt^2 / m.
+    if (ground_) load -= model_.ground_acceleration(t) * (dt_ * dt_);
     dx_next = damping_keep_ * dx_ + damping_scale_ * load;
   }
 

@@ -89,6 +89,13 @@ struct BasicModel {
            static_limit() == friction && !ground_motion;
   }
 
+  // Throws InvalidInput("ground_motion", the record's file, rule) if the
+  // model has a record: for what a transient record cannot have (a steady
+  // state; the velocity scale B/(m w) of compare).
+  void refuse_ground_motion(const std::string& rule) const {
+    if (ground_motion) throw InvalidInput("ground_motion", ground_motion->file, rule);
+  }
+
   // The ground's acceleration a_g(t): linear between the record's samples,
   // 0 outside them and without a record (at a sample, its value).
   Real ground_acceleration(const Real& t) const {

@@ -184,6 +184,7 @@ class StiffSpringSimulator {
   };
   bool general_ = false;
   std::vector<Rotation> harmonics_;
+  bool ground_ = false;             // a record: -m a_g(t_n) joins the load
   int sliding_ = 0;                 // +1 / -1: the slider slides that way; 0: stuck
   double static_force_ = 0;         // Rs
   double static_elongation_ = 0;    // Rs / kf

@@ -167,6 +167,10 @@ PreparedComparison prepare_comparison(const CompareInputs& typed, const ModelOpt
   options.max_missed_stops = parse_count({"--max-missed-stops", typed.max_missed_stops});
   options.max_extra_stops = parse_count({"--max-extra-stops", typed.max_extra_stops});
   translating(inputs, [&] { options.validate(); });
+  refuse_ground_motion(
+      prepared.model, "compare",
+      "not yet: its velocities are judged relative to B/(m w), which a record does not have (newmark "
+      "--method slammer is a numerical peer for records; events and curve give the exact motion)");
   if (!(prepared.model.amplitude > 0))
     throw bad_input(
         fmt::format("--amplitude = {}: must be > 0 to compare (velocities are judged "

@@ -173,6 +173,10 @@ ExitCode run_convergence(const ConvergenceOptions& options, const Invocation& in
                       options.dt_fractions));
   if (options.format != "csv" && options.format != "markdown")
     throw bad_input(fmt::format("--format = {}: must be csv or markdown", options.format));
+  refuse_ground_motion(model, "convergence",
+                       "not yet: its errors are relative to B/(m w), which a record does not have (stiff "
+                       "runs the penalty model on a record; newmark --method slammer is a "
+                       "numerical peer)");
   if (!(model.amplitude > 0))
     throw bad_input(
         fmt::format("--amplitude = {}: must be > 0 for convergence (errors are "

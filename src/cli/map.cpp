@@ -2,8 +2,6 @@
 // model parameters (library: frictionref/parameter_map.hpp), as CSV, with a
 // heat map of the stops per period and Den Hartog's non-stop boundary where
 // it applies. All cores; a progress line on a terminal.
-#include "frictionref/parameter_map.hpp"
-
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -18,6 +16,7 @@
 #include "csv_format.hpp"
 #include "figure.hpp"
 #include "frictionref/den_hartog.hpp"
+#include "frictionref/parameter_map.hpp"
 #include "frictionref/version.hpp"
 #include "model_options.hpp"
 #include "progress_line.hpp"
@@ -56,13 +55,13 @@ std::string spec_text(const MapAxis& axis) {
 void write_table(std::FILE* out, const Model& base, const MapAxis& x, const MapAxis& y,
                  const MapOptions& options, const std::optional<Shard>& shard,
                  const std::vector<MapPoint>& points, const std::string& command) {
-  write_metadata(out, base, command,
-                 shard_lines(fmt::format("map: x={} y={} periods={} max_multiplicity={} "
-                                         "tolerance={} method=simulation",
-                                         spec_text(x), spec_text(y), options.classify.max_periods,
-                                         options.classify.max_multiplicity,
-                                         options.classify.tolerance),
-                             shard, x.points * y.points));
+  write_metadata(
+      out, base, command,
+      shard_lines(fmt::format("map: x={} y={} periods={} max_multiplicity={} "
+                              "tolerance={} method=simulation",
+                              spec_text(x), spec_text(y), options.classify.max_periods,
+                              options.classify.max_multiplicity, options.classify.tolerance),
+                  shard, x.points * y.points));
   fmt::print(out,
              "{},{},regime,stops_per_period,reversals_per_period,multiplicity,stuck_fraction,"
              "transient_periods\n",
@@ -75,14 +74,15 @@ void write_table(std::FILE* out, const Model& base, const MapAxis& x, const MapA
 // Den Hartog's boundary applies to a spring + Coulomb model without damper,
 // offset or extra harmonics, on a lambda x frequency-ratio map.
 bool boundary_applies(const Model& base, const MapAxis& x, const MapAxis& y) {
-  const bool axes = (x.parameter == MapParameter::lambda && y.parameter == MapParameter::frequency_ratio) ||
-                    (x.parameter == MapParameter::frequency_ratio && y.parameter == MapParameter::lambda);
+  const bool axes =
+      (x.parameter == MapParameter::lambda && y.parameter == MapParameter::frequency_ratio) ||
+      (x.parameter == MapParameter::frequency_ratio && y.parameter == MapParameter::lambda);
   return axes && base.stiffness > 0 && base.damping == 0 && base.force_offset == 0 &&
          base.harmonics.empty() && base.amplitude > 0;
 }
 
-Figure map_figure(const Model& base, const MapAxis& x, const MapAxis& y,
-                  const MapOptions& options, const std::vector<MapPoint>& points) {
+Figure map_figure(const Model& base, const MapAxis& x, const MapAxis& y, const MapOptions& options,
+                  const std::vector<MapPoint>& points) {
   Panel panel;
   panel.x_label = std::string(to_string(x.parameter)) + " [1]";
   panel.y_label = std::string(to_string(y.parameter)) + " [1]";
@@ -94,9 +94,8 @@ Figure map_figure(const Model& base, const MapAxis& x, const MapAxis& y,
                             options.classify.max_periods);
   if (boundary_applies(base, x, y)) {
     // Rs / R of the base model (1 unless a static friction was set).
-    const double ratio = base.static_friction && base.friction > 0
-                             ? *base.static_friction / base.friction
-                             : 1.0;
+    const double ratio =
+        base.static_friction && base.friction > 0 ? *base.static_friction / base.friction : 1.0;
     Series boundary{"Den Hartog's non-stop boundary", {}, {}, Series::Role::reference};
     const MapAxis& beta_axis = x.parameter == MapParameter::frequency_ratio ? x : y;
     const std::size_t n = std::max<std::size_t>(400, beta_axis.points);
@@ -124,6 +123,9 @@ Figure map_figure(const Model& base, const MapAxis& x, const MapAxis& y,
 
 void run_map(const MapCliOptions& typed, const Invocation& invocation) {
   const Model base = typed.model.model();
+  refuse_ground_motion(base, "map",
+                       "it maps steady states, which a record (a transient) does not have "
+                       "(newmark runs records x yield accelerations)");
   const auto axis = [](const std::string& spec, const char* option) {
     try {
       return MapAxis::parse(spec, option);
@@ -144,10 +146,10 @@ void run_map(const MapCliOptions& typed, const Invocation& invocation) {
   if (options.classify.max_periods < 2)
     throw bad_input(fmt::format("--periods = {}: must be >= 2", typed.periods));
   if (total_points * static_cast<double>(options.classify.max_periods) > max_total_periods)
-    throw bad_input(fmt::format("--periods = {}: the map could simulate {:.3g} forcing periods, "
-                                "more than 10^10",
-                                typed.periods,
-                                total_points * static_cast<double>(options.classify.max_periods)));
+    throw bad_input(fmt::format(
+        "--periods = {}: the map could simulate {:.3g} forcing periods, "
+        "more than 10^10",
+        typed.periods, total_points * static_cast<double>(options.classify.max_periods)));
   if (!typed.threads.empty())
     options.threads =
         static_cast<unsigned>(whole_number({"--threads", typed.threads}, max_threads, "256"));
@@ -168,9 +170,10 @@ void run_map(const MapCliOptions& typed, const Invocation& invocation) {
       if (on_x || on_y)
         throw bad_input(fmt::format("{} = {}: {}", on_x ? "--x" : "--y", on_x ? typed.x : typed.y,
                                     error.rule()));
-      throw bad_input(fmt::format("the map's grid reaches an invalid model at a corner: {} = {}: "
-                                  "{} (check --x and --y against the model options)",
-                                  p, error.value(), error.rule()));
+      throw bad_input(
+          fmt::format("the map's grid reaches an invalid model at a corner: {} = {}: "
+                      "{} (check --x and --y against the model options)",
+                      p, error.value(), error.rule()));
     }
   };
   AtomicOutput out(typed.output.path(), "-o");  // a bad -o fails now, not after the run
@@ -184,7 +187,8 @@ void run_map(const MapCliOptions& typed, const Invocation& invocation) {
     });
   }
   write_table(out.stream(), base, x, y, options, shard, points, invocation.command_line);
-  if (!typed.plot.empty()) write_figure(map_figure(base, x, y, options, points), typed.plot, "--plot");
+  if (!typed.plot.empty())
+    write_figure(map_figure(base, x, y, options, points), typed.plot, "--plot");
   out.commit();
 }
 

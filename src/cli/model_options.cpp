@@ -20,6 +20,12 @@ CLI::Option* numeric(CLI::Option* option) {
   });
 }
 
+void refuse_ground_motion(const Model& model, const std::string& command, const std::string& why) {
+  if (model.ground_motion)
+    throw bad_input("--ground-accel = " + model.ground_motion->file + ": is not taken by " +
+                    command + ": " + why);
+}
+
 CliError to_bad_input(const InvalidInput& error, const TypedInputs& inputs) {
   return bad_input(input_message(error, inputs));
 }

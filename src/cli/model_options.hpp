@@ -51,6 +51,11 @@ decltype(auto) naming_options(const TypedInputs& inputs, F&& f) {
   }
 }
 
+// "--ground-accel = FILE: is not taken by <command>: <why>" (bad input) if
+// the model has a record: for the commands that need what a transient
+// record does not have (a steady state, the velocity scale B/(m w)).
+void refuse_ground_motion(const Model& model, const std::string& command, const std::string& why);
+
 // --mass --amplitude --omega (--friction | --lambda | --yield-accel)
 // [--static-friction | --static-lambda] --stiffness --damping --force-offset
 // --harmonic B,W[,PHI]... --x0 --v0 --t0, and a ground motion: --ground-accel

@@ -39,7 +39,9 @@ Classification from_seed(const Model& model) {
 
 }  // namespace
 
-std::string_view to_string(ClassificationMethod method) { return detail::name_of(kMethodNames, method); }
+std::string_view to_string(ClassificationMethod method) {
+  return detail::name_of(kMethodNames, method);
+}
 std::optional<ClassificationMethod> classification_method_from_string(std::string_view text) {
   return detail::enum_from_name(kMethodNames, text);
 }
@@ -58,6 +60,8 @@ void ClassifyOptions::validate() const {
 Classification classify(const Model& model, const ClassifyOptions& options) {
   model.validate();
   options.validate();
+  model.refuse_ground_motion(
+      "has no steady state to classify: a record is a transient (use events, curve or newmark)");
   if (options.closed_forms && model.is_harmonic_coulomb()) return from_seed(model);
   std::optional<DenHartogSolution> den_hartog_solution;
   if (den_hartog_applies(model)) {

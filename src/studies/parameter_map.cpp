@@ -62,7 +62,8 @@ std::string column_name(MapParameter parameter) {
 }
 std::string map_parameter_names() {
   std::string names;
-  for (const auto& [value, name] : kParameterNames) names += (names.empty() ? "" : ", ") + std::string(name);
+  for (const auto& [value, name] : kParameterNames)
+    names += (names.empty() ? "" : ", ") + std::string(name);
   return names;
 }
 
@@ -158,7 +159,8 @@ MapAxis MapAxis::parse(std::string_view spec, const std::string& option) {
   std::size_t begin = 0;
   for (;;) {
     const std::size_t colon = spec.find(':', begin);
-    fields.emplace_back(spec.substr(begin, colon == std::string_view::npos ? colon : colon - begin));
+    fields.emplace_back(
+        spec.substr(begin, colon == std::string_view::npos ? colon : colon - begin));
     if (colon == std::string_view::npos) break;
     begin = colon + 1;
   }
@@ -168,8 +170,9 @@ MapAxis MapAxis::parse(std::string_view spec, const std::string& option) {
   MapAxis axis;
   const auto parameter = map_parameter_from_string(fields[0]);
   if (!parameter)
-    throw InvalidInput(option, whole,
-                       "unknown parameter '" + fields[0] + "' (one of " + map_parameter_names() + ")");
+    throw InvalidInput(
+        option, whole,
+        "unknown parameter '" + fields[0] + "' (one of " + map_parameter_names() + ")");
   axis.parameter = *parameter;
   const auto number = [&](const std::string& field, const char* what) {
     const char* text_begin = field.c_str();
@@ -199,6 +202,9 @@ std::vector<MapPoint> parameter_map(const Model& base, const MapAxis& x, const M
   options.classify.validate();
   options.shard.validate();
   base.validate();
+  base.refuse_ground_motion(
+      "is not taken by map: it maps steady states, which a record (a transient) does not have "
+      "(newmark runs records x yield accelerations)");
   const std::vector<double> xs = x.values(), ys = y.values();
   const auto model_at = [&](double xv, double yv) {
     return with_parameter(with_parameter(base, x.parameter, xv), y.parameter, yv);

@@ -11,12 +11,12 @@
 
 #include "frictionref/classification.hpp"
 #include "frictionref/den_hartog.hpp"
+#include "frictionref/detail/number_text.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
 #include "frictionref/phase.hpp"
 #include "frictionref/steady_state.hpp"
-#include "frictionref/detail/number_text.hpp"
 #include "studies/parallel_for.hpp"
 
 namespace frictionref {
@@ -106,13 +106,17 @@ void SweepOptions::validate() const {
                        "must be >= 1 (static friction Rs = ratio R is at least the sliding "
                        "friction R)");
   base.validate();
+  base.refuse_ground_motion(
+      "is not taken by sweep: it measures steady states, which a record (a transient) does "
+      "not have (newmark runs records x yield accelerations)");
   if (!(base.amplitude > 0))
     throw InvalidInput("amplitude", text(base.amplitude), "must be > 0 (lambda = R / B)");
   const auto set_by_sweep = [](const char* name, double value, const char* rule) {
     throw InvalidInput(name, text(value), rule);
   };
   if (base.friction != 0)
-    set_by_sweep("friction", base.friction, "must be 0 in the base model: the sweep sets R = lambda B");
+    set_by_sweep("friction", base.friction,
+                 "must be 0 in the base model: the sweep sets R = lambda B");
   if (base.static_friction)
     set_by_sweep("static_friction", *base.static_friction,
                  "must be unset in the base model: the sweep sets Rs = static_ratio R");
@@ -136,7 +140,8 @@ SweepWindow sweep_window(std::uint64_t periods, const Model& base) {
   SweepWindow window;
   window.begin =
       static_cast<double>((two_pi_l * n * static_cast<long double>(periods - 1) + half_pi_l) / w);
-  window.end = static_cast<double>((two_pi_l * n * static_cast<long double>(periods) + half_pi_l) / w);
+  window.end =
+      static_cast<double>((two_pi_l * n * static_cast<long double>(periods) + half_pi_l) / w);
   return window;
 }
 

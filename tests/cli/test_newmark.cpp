@@ -5,6 +5,7 @@
 // figures, and every bad input (one line, exit 2, no file).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -140,6 +141,72 @@ TEST(Newmark, FiguresForTheCurveAndForOneRun) {
   EXPECT_NE(svg.find("KY = 0.1 g"), std::string::npos);
   EXPECT_EQ(dir.entries(), (std::vector<std::string>{"curve.svg", "history.svg", "n.csv"}));
 }
+
+// The penalty model (stiff) carries the record too: a = -3 for 0 <= t <= 2
+// (--gravity 1), R = 1: exact stop at t = 6, x = 12 (as events says).
+TEST(Records, StiffSpringAndEventsOnAHandSolvedRecord) {
+  TempDir dir;
+  write(dir.path() / "pulse.csv", "t,a\n0,-3\n2,-3\n");
+  RunResult result = run_frictionref({"events", "--ground-accel", "pulse.csv", "--gravity", "1",
+                                      "--yield-accel", "1", "--t-end", "10"},
+                                     dir.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  Csv csv = parse_csv(result.out);
+  ASSERT_EQ(csv.rows.size(), 2u);
+  EXPECT_EQ(csv.rows[0][0], "slip+");
+  EXPECT_EQ(csv.rows[0][2], "6");
+  EXPECT_EQ(csv.rows[0][4], "12");
+  // The penalty model's error shrinks as its step does (about as 1 / sqrt(kf)):
+  // 4.5e-3 at kf = 1e6, 4.5e-4 at 1e8.
+  double previous = 1;
+  for (const char* kf : {"1e6", "1e8"}) {
+    result = run_frictionref({"stiff", "--ground-accel", "pulse.csv", "--gravity", "1",
+                              "--yield-accel", "1", "--t-end", "10", "--kf", kf},
+                             dir.path());
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    csv = parse_csv(result.out);
+    ASSERT_FALSE(csv.rows.empty());
+    const double error = std::fabs(to_double(csv.rows.back()[1]) - 12.0);
+    EXPECT_LT(error, previous / 5) << "kf " << kf;
+    EXPECT_LT(error, 1e-2) << "kf " << kf;
+    previous = error;
+  }
+}
+
+// Commands that need what a record does not have refuse it, naming it.
+class RecordRefused : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(RecordRefused, OneLineExit2NoFile) { expect_rejected(GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(
+    Records, RecordRefused,
+    ::testing::Values(
+        BadInput{{"classify", "--ground-accel", kPulseTrain, "--yield-accel", "0.1"},
+                 "--ground-accel",
+                 "no steady state"},
+        BadInput{writing("compare", {"--ground-accel", kPulseTrain, "--yield-accel", "0.1",
+                                     "--candidate", kNonuniform}),
+                 "--ground-accel", "not taken by compare"},
+        BadInput{writing("convergence", {"--ground-accel", kPulseTrain, "--yield-accel", "0.1"}),
+                 "--ground-accel", "not taken by convergence"},
+        BadInput{writing("sweep", {"--ground-accel", kPulseTrain, "--lambda-from", "0",
+                                   "--lambda-to", "1", "--points", "3"}),
+                 "--ground-accel", "not taken by sweep"},
+        BadInput{writing("map", {"--ground-accel", kPulseTrain, "--x", "lambda:0:1:3", "--y",
+                                 "omega:1:2:3"}),
+                 "--ground-accel", "not taken by map"},
+        BadInput{writing("stiff", {"--ground-accel", kPulseTrain, "--yield-accel", "0.1",
+                                   "--one-way", "--t-end", "1"}),
+                 "--one-way", "no one-way slider"},
+        BadInput{writing("events", {"--ground-accel", kPulseTrain, "--yield-accel", "0.1",
+                                    "--stiffness", "1", "--t-end", "1"}),
+                 "--stiffness", "rigid block"},
+        BadInput{writing("events", {"--one-way", "--friction", "0.1", "--t-end", "1"}), "--one-way",
+                 "--ground-accel"},
+        BadInput{writing("events", {"--ground-accel", kPulseTrain, "--yield-accel", "0.1",
+                                    "--friction", "1", "--t-end", "1"}),
+                 "--yield-accel", ""}),
+    bad_input_name);
 
 class NewmarkBadInput : public ::testing::TestWithParam<BadInput> {};
 
