@@ -370,6 +370,17 @@ GroundMotion parse_ground_motion(const std::string& bytes, const std::string& na
     record.scaling = record.scaling == "none" ? "inverse" : record.scaling + ", inverse";
   const double unit_factor = options.gravity == g_file ? 1.0 : options.gravity / g_file;
   record.factor = (options.inverse ? -1.0 : 1.0) * unit_factor * s;
+  // A factor out of double's range would turn the record into zeros (or
+  // infinities) without a word.
+  if (!std::isfinite(record.factor) || record.factor == 0) {
+    const std::string rule = "with --gravity " + text(options.gravity) + " and the file's units (" +
+                             std::string(to_string(raw.units)) +
+                             ") gives the accelerations a factor of " + text(record.factor) +
+                             ", outside double's range";
+    if (options.scale) throw InvalidInput("scale", text(*options.scale), rule);
+    if (options.target_pga) throw InvalidInput("target_pga", text(*options.target_pga), rule);
+    throw InvalidInput("gravity", text(options.gravity), rule);
+  }
   record.t = std::move(raw.t);
   record.a.resize(raw.a.size());
   for (std::size_t i = 0; i < raw.a.size(); ++i) {

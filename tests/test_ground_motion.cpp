@@ -331,6 +331,22 @@ TEST(GroundMotionRefused, ScalingThatOverflows) {
   EXPECT_EQ(refused("0 1e10\n1 0\n", "rec.csv", options).parameter(), "scale");
 }
 
+// Found by fuzz_ground_motion (CI, 1.6 M executions): a factor that
+// underflows to 0 made every acceleration 0 without a word.
+TEST(GroundMotionRefused, FactorOutOfRange) {
+  GroundMotionReadOptions options;
+  options.target_pga = 1e-300;
+  options.gravity = 1e-30;  // x 1e-30 / 1 / 1.2: 0 in double
+  InvalidInput e = refused("0 1.2\n1 0\n", "rec.csv", options);
+  EXPECT_EQ(e.parameter(), "target_pga");
+  EXPECT_TRUE(contains(e.rule(), "outside double's range")) << e.what();
+  options = {};
+  options.gravity = 5e-324;
+  options.units = AccelUnits::cm_per_s2;  // 5e-324 / 980.665 = 0
+  e = refused("0 1.2\n1 0\n", "rec.csv", options);
+  EXPECT_EQ(e.parameter(), "gravity");
+}
+
 TEST(GroundMotionRefused, StepWhoseTimesOverflow) {
   std::string column;
   for (int i = 0; i < 4; ++i) column += "0.1\n";
