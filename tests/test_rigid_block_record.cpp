@@ -140,6 +140,43 @@ TEST(RigidBlockRecord, RefusesWhatItDoesNotSolveYet) {
   EXPECT_EQ(expect_invalid([&] { backwards.validate(); }).parameter(), "v0");
 }
 
+// A harmonic base motion a_g = -sin t is the seed's model (B = m = w = 1):
+// a record sampling it at step h is its linear interpolant, off by at most
+// h^2 / 8, so the record engine must approach the seed's engine (closed-form
+// slips, another family of laws) as h^2. Two engines, one answer: the
+// harmonic-base anchor of docs/validation.md.
+TEST(RigidBlockRecord, SampledSineConvergesToTheSeedEngine) {
+  const double t_end = 20 * M_PI;  // 10 periods
+  for (const double lambda : {0.3, 0.7}) {
+    Model seed;
+    seed.friction = lambda;
+    const Solution exact = solve(seed, t_end);
+    double previous = 0;
+    for (const int per_period : {200, 400, 800}) {
+      const int n = 10 * per_period;
+      std::vector<double> t(n + 1), a(n + 1);
+      for (int i = 0; i <= n; ++i) {
+        t[i] = t_end * i / n;
+        a[i] = -std::sin(t[i]);
+      }
+      const Solution sampled = solve(block(record(t, a), lambda), t_end);
+      ASSERT_EQ(sampled.summary.termination, Termination::reached_end);
+      double error = 0;
+      for (int j = 1; j <= 40; ++j) {
+        const double tj = t_end * j / 40 * (1 - 1e-9);
+        error = std::max(error, std::fabs(sampled.state_at(tj).x - exact.state_at(tj).x));
+      }
+      const double h = 2 * M_PI / per_period;
+      SCOPED_TRACE("lambda " + std::to_string(lambda) + " h " + std::to_string(h));
+      EXPECT_LT(error, 10 * h * h);  // h^2 / 8 in the force, over 10 periods
+      if (previous > 0) {
+        EXPECT_LT(error, previous / 3);
+      }
+      previous = error;
+    }
+  }
+}
+
 TEST(RigidBlockRecord, ModelForceIncludesTheRecord) {
   const Model m = block(record({0, 2}, {0, -4}), 1);
   EXPECT_EQ(m.ground_acceleration(1.0), -2.0);
