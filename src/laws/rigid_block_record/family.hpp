@@ -112,6 +112,13 @@ auto RigidBlockRecordFamily<Real>::stick_end(const Work& tau, const Work& /*x*/)
     -> Breakaway<Work> {
   Breakaway<Work> result;
   for (std::size_t k = net_.segment_at(tau); k < net_.segments(); ++k) {
+    // Most of a stick's segments lie well inside the band: skip them on
+    // their sample values alone (net_acceleration.hpp).
+    if (k >= 1 && k < net_.samples() && net_.begin_of(k) > tau && net_.end_of(k) < tau_end_ &&
+        net_.strictly_inside(k, mu_static_, one_way_)) {
+      ++summary_->sign_tests;
+      continue;
+    }
     const Segment s = net_.segment(k);
     const Work from = s.begin > tau ? s.begin : tau;
     if (!(from < tau_end_)) break;
@@ -157,7 +164,7 @@ auto RigidBlockRecordFamily<Real>::slip_end(const PhaseStart<Work>& start) -> Sl
     // From rest the slip starts on the band's edge: in exact arithmetic
     // s A >= 0 there; a rounding below is the edge itself.
     if (v == 0 && s * piece.acceleration < 0) piece.acceleration = 0;
-    const Work length = (to - tau) / omega_;
+    const Work length = omega_ == 1 ? to - tau : (to - tau) / omega_;  // exact when w = 1
     ++summary_->sign_tests;
     const Work h = piece.first_stop(s, length, summary_->root_function_calls);
     if (h >= 0) {

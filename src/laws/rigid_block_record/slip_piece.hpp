@@ -39,8 +39,11 @@ struct SlipPiece {
     const Work sv_end = s * velocity_at(length);
     ++calls;
     // The vertex of v, where the piece splits into two monotone halves.
+    // Only where A and J have opposite signs is it ahead (h* > 0): the
+    // division is skipped elsewhere, with the same outcome.
     Work vertex = -1;
-    if (jerk != 0) vertex = -acceleration / jerk;
+    if ((acceleration > 0 && jerk < 0) || (acceleration < 0 && jerk > 0))
+      vertex = -acceleration / jerk;
     if (vertex > 0 && vertex < length) {
       const Work sv_vertex = s * velocity_at(vertex);
       ++calls;
