@@ -50,6 +50,7 @@ struct SlammerResult {
   std::size_t slip_episodes = 0;     // slides started (v from 0 to != 0)
   double max_relative_velocity = 0;  // max |v| [length/s]
   double final_velocity = 0;         // v at the last sample [length/s]
+  bool at_rest_at_end = true;        // |v| below SLAMMER's rest threshold at the last sample
   std::size_t skipped_zero_samples = 0;
   std::vector<double> displacement_history;  // u after each sample, if asked
 };

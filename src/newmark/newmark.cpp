@@ -21,9 +21,6 @@ namespace {
 // the record cannot go beyond it.
 constexpr double max_horizon = 1e9;
 
-// SLAMMER's rest threshold on |v| (slammer_rigid_block.cpp).
-constexpr double slammer_rest = 1e-15;
-
 // The record with its accelerations negated, provenance kept.
 std::shared_ptr<const GroundMotion> negated(const GroundMotion& record) {
   auto copy = std::make_shared<GroundMotion>(record);
@@ -177,8 +174,7 @@ NewmarkResult analysis(const std::shared_ptr<const GroundMotion>& as_read,
     result.displacement_at_record_end = run.displacement;
     // SLAMMER stops at the last sample; its answer is final if the block is
     // at rest there by its own threshold.
-    if (std::fabs(run.final_velocity) < slammer_rest)
-      result.permanent_displacement = run.displacement;
+    if (run.at_rest_at_end) result.permanent_displacement = run.displacement;
     result.slip_episodes = run.slip_episodes;
     result.max_relative_velocity = run.max_relative_velocity;
   }
@@ -218,8 +214,7 @@ NewmarkResult newmark_analysis(const GroundMotion& record, double yield_accel_g,
   record.validate();
   // In the calling thread: no pool for one run. The record as read is not
   // copied: a pointer that does not own it, alive for this call.
-  const std::shared_ptr<const GroundMotion> as_read(std::shared_ptr<const GroundMotion>(),
-                                                    &record);
+  const std::shared_ptr<const GroundMotion> as_read(std::shared_ptr<const GroundMotion>(), &record);
   const auto negative = needs_negated(options) ? negated(record) : nullptr;
   if (method == NewmarkMethod::slammer) require_uniform_step(record);
   return analysis(as_read, negative, yield_accel_g, one_way, polarity, method);

@@ -72,6 +72,7 @@ SlammerResult slammer_rigid_block(const GroundMotion& record, const SlammerOptio
   }
   result.displacement = u;
   result.final_velocity = v;
+  result.at_rest_at_end = std::fabs(v) < kRest;
   return result;
 }
 
