@@ -306,6 +306,25 @@ double GroundMotion::pga() const {
   return peak;
 }
 
+// The ground's velocity is the integral of the piecewise-linear acceleration
+// from rest at t[0]: a quadratic on each interval, extreme at the interval's
+// ends or where the acceleration changes sign inside it; constant after the
+// last sample (the acceleration is zero there).
+double GroundMotion::pgv() const {
+  double v = 0;
+  double peak = 0;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    const double h = t[i + 1] - t[i];
+    if ((a[i] < 0 && a[i + 1] > 0) || (a[i] > 0 && a[i + 1] < 0)) {
+      const double s = h * a[i] / (a[i] - a[i + 1]);  // the sign change, in (0, h)
+      peak = std::max(peak, std::fabs(v + 0.5 * a[i] * s));
+    }
+    v += 0.5 * (a[i] + a[i + 1]) * h;
+    peak = std::max(peak, std::fabs(v));
+  }
+  return peak;
+}
+
 void GroundMotion::validate() const {
   if (a.size() != t.size())
     throw InvalidInput("a", std::to_string(a.size()) + " values",

@@ -359,6 +359,48 @@ TEST(GroundMotionRefused, StepWhoseTimesOverflow) {
   EXPECT_TRUE(contains(e.rule(), "finite")) << e.what();
 }
 
+// The peak ground velocity, integrated by hand: v_g is the area under the
+// piecewise-linear acceleration from rest at the first sample.
+TEST(GroundMotionPeaks, PeakGroundVelocityAtTheEndsOrWhereTheAccelerationChangesSign) {
+  GroundMotion r;
+  // a = 3 -> -1 over [0, 1]: the sign changes at s = 3/4, where v = 3 * 3/4 / 2
+  // = 9/8; at t = 1 the area is (3 - 1) / 2 = 1. The peak is inside.
+  r.t = {0, 1};
+  r.a = {3, -1};
+  EXPECT_EQ(r.pgv(), 1.125);
+  EXPECT_EQ(r.pga(), 3);
+  // a = 2 -> -2 over [0, 1] (v = 1/2 at s = 1/2, 0 at 1), then -2 -> 0 over
+  // [1, 3] (area -2): the peak |v| = 2 is at the last sample, and v stays
+  // there after it (the acceleration is zero).
+  r.t = {0, 1, 3};
+  r.a = {2, -2, 0};
+  EXPECT_EQ(r.pgv(), 2);
+  // Samples of one sign: the largest |area so far|.
+  r.t = {0, 0.5, 1.5};
+  r.a = {-1, -1, 0};
+  EXPECT_EQ(r.pgv(), 1);  // 0.5 + 0.5
+  // Zero throughout.
+  r.t = {0, 1};
+  r.a = {0, 0};
+  EXPECT_EQ(r.pgv(), 0);
+}
+
+// A sampled cos(w t) has the ground velocity sin(w t) / w: PGV -> 1 / w as
+// the step shrinks (the trapezoidal areas are exact for the linear
+// interpolant, which differs from the cosine by O(h^2)).
+TEST(GroundMotionPeaks, PeakGroundVelocityOfASampledCosine) {
+  const double w = 3;
+  for (int per_period : {200, 2000}) {
+    GroundMotion r;
+    const double h = 2 * M_PI / w / per_period;
+    for (int i = 0; i <= 3 * per_period; ++i) {
+      r.t.push_back(i * h);
+      r.a.push_back(std::cos(w * i * h));
+    }
+    EXPECT_NEAR(r.pgv(), 1 / w, (w * h) * (w * h) / w) << per_period;
+  }
+}
+
 TEST(GroundMotionValidate, NamesTheSample) {
   GroundMotion r;
   r.t = {0, 1, 1};

@@ -90,6 +90,9 @@ struct GroundMotion {
   std::size_t samples() const { return t.size(); }
   double duration() const { return t.back() - t.front(); }
   double pga() const;  // max |a| after scaling, in the output unit
+  // Peak ground velocity: max |v_g| of the ground's velocity v_g, integrated
+  // exactly from rest at t[0] (baseline as recorded, no correction).
+  double pgv() const;
 
   // Throws InvalidInput naming the field ("t[7]", "a", ...), the value and
   // the rule: equal lengths, at least 2 samples, finite values, t increasing.
