@@ -4,7 +4,6 @@
 #include "frictionref/comparison.hpp"
 
 #include <algorithm>
-#include <boost/math/constants/constants.hpp>
 #include <cmath>
 
 #include "comparison/checks.hpp"
@@ -17,6 +16,7 @@
 #include "comparison/sticks.hpp"
 #include "frictionref/detail/number_text.hpp"
 #include "frictionref/error.hpp"
+#include "frictionref/motion_scales.hpp"
 
 namespace frictionref {
 namespace {
@@ -42,12 +42,10 @@ ComparisonReport describe_record(const Model& model, const TimeHistory& history,
   r.t_last = history.t.back();
   for (std::size_t i = 1; i < history.t.size(); ++i)
     r.max_spacing = std::max(r.max_spacing, history.t[i] - history.t[i - 1]);
-  r.velocity_scale = model.amplitude / (model.mass * model.omega);
-  r.displacement_scale = r.velocity_scale / model.omega;
-  r.period = boost::math::double_constants::two_pi / model.omega;
-  r.stick_velocity = options.stick_threshold * r.velocity_scale;
-  r.min_stick_time = options.min_stick_duration * r.period;
-  r.stop_time_margin = options.stop_time_tolerance * r.period;
+  r.scales = motion_scales(model, "to compare");
+  r.stick_velocity = options.stick_threshold * r.scales.velocity;
+  r.min_stick_time = options.min_stick_duration * r.scales.period;
+  r.stop_time_margin = options.stop_time_tolerance * r.scales.period;
   return r;
 }
 
@@ -74,11 +72,10 @@ void add_notes(ComparisonReport& r) {
                       " exceeds the stop-time tolerance " + g(r.stop_time_margin) +
                       ": stops are located only to about the spacing (both sides are read from "
                       "the same samples); archive more often for a sharper check");
-  if (record < r.options.regime_window * r.period)
-    r.notes.push_back("the record (" + g(record / r.period) +
-                      " periods) is shorter than the regime window (" + g(r.options.regime_window) +
-                      " periods): the regime is read from the whole "
-                      "record");
+  if (record < r.options.regime_window * r.scales.period)
+    r.notes.push_back("the record (" + g(record / r.scales.period) + " " + r.scales.period_unit +
+                      ") is shorter than the regime window (" + g(r.options.regime_window) + " " +
+                      r.scales.period_unit + "): the regime is read from the whole record");
   if (r.exact_shown_regime != r.exact_regime)
     r.notes.push_back("over the regime window the exact motion shows " +
                       std::string(to_string(r.exact_shown_regime)) + " while its steady state is " +
@@ -112,13 +109,6 @@ ComparisonReport compare(const Model& model, const TimeHistory& history,
   model.validate();
   options.validate();
   history.validate();
-  model.refuse_ground_motion(
-      "is not taken by compare yet: its velocities are judged relative to B/(m w), which a "
-      "record does not have (use newmark --method slammer, or events or curve and compare "
-      "by hand)");
-  if (!(model.amplitude > 0))
-    throw InvalidInput("amplitude", text(model.amplitude),
-                       "must be > 0 to compare (velocities are judged relative to B/(m w))");
   if (history.t.front() < model.t0)
     throw InvalidInput("t[0]", text(history.t.front()),
                        "must be >= t0 = " + text(model.t0) + " (the exact motion starts at t0)");

@@ -12,9 +12,13 @@
 // phases: PASS needs the samples to resolve every exact phase and event. The
 // creep check and the diagnosis read those phases too.
 //
-// Scales: velocities are judged relative to B/(m w), displacements relative to
-// B/(m w^2) and times relative to the forcing period 2 pi / w, so the default
-// tolerances mean the same for every consistent set of units.
+// Scales (motion_scales.hpp): velocities are judged relative to B/(m w),
+// displacements relative to B/(m w^2) and times relative to the forcing
+// period 2 pi / w, so the default tolerances mean the same for every
+// consistent set of units. Under a ground-motion record the same roles are
+// played by its peak ground velocity PGV, PGV^2/PGA and T* = 2 pi PGV/PGA
+// (the three coincide for a harmonic ground acceleration); in the comments
+// below, read B/(m w) as "the velocity scale", and so on.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +29,7 @@
 
 #include "frictionref/classification.hpp"
 #include "frictionref/model.hpp"
+#include "frictionref/motion_scales.hpp"
 #include "frictionref/phase.hpp"
 #include "frictionref/time_history.hpp"
 #include "frictionref/types.hpp"
@@ -176,9 +181,7 @@ struct ComparisonReport {
   double max_spacing = 0;  // largest gap between consecutive candidate times [time]
 
   // Scales and the options in absolute units.
-  double velocity_scale = 0;      // B/(m w) [length/time]
-  double displacement_scale = 0;  // B/(m w^2) [length]
-  double period = 0;              // 2 pi / w [time]
+  MotionScales scales;  // B/(m w), B/(m w^2), 2 pi / w; or a record's PGV, PGV^2/PGA, T*
   double stick_velocity = 0;      // stick_threshold * velocity_scale [length/time]
   double min_stick_time = 0;      // min_stick_duration * period [time]
   double stop_time_margin = 0;    // stop_time_tolerance * period [time]

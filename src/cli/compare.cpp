@@ -79,7 +79,7 @@ Figure comparison_figure(const ComparisonReport& report, const TimeHistory& hist
   difference.y_label = "v - v_exact [length/time]";
   difference.series.push_back(decimated("candidate - exact", history.t, error, max_points));
   // The tolerance band as one closed outline.
-  const double tolerance = report.options.velocity_max_tolerance * report.velocity_scale;
+  const double tolerance = report.options.velocity_max_tolerance * report.scales.velocity;
   Series band;
   band.title = fmt::format("tolerance +-{}", number(tolerance));
   band.x = {report.t_first, report.t_last, report.t_last, report.t_first, report.t_first};

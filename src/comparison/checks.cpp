@@ -18,30 +18,31 @@ void add(ComparisonReport& r, CheckKind kind, bool passed, double value, double 
 void check_velocity(ComparisonReport& r, const TimeHistory& history, const ExactMotion& exact,
                     const ErrorStats& velocity) {
   const CompareOptions& o = r.options;
-  const double max = r.velocity_max_error / r.velocity_scale;
+  const double max = r.velocity_max_error / r.scales.velocity;
   const std::size_t n = velocity.max_row;
   add(r, CheckKind::velocity_max, max <= o.velocity_max_tolerance, max, o.velocity_max_tolerance,
-      "max |v - v_exact| = " + g(max) + " B/(m w) (" + g(r.velocity_max_error) +
-          ") at t = " + g(r.velocity_max_error_time) + " (v = " + g(history.v[n]) + ", v_exact = " +
-          g(exact.states[n].v) + "); tolerance " + g(o.velocity_max_tolerance) + " B/(m w)");
-  const double rms = r.velocity_rms_error / r.velocity_scale;
+      "max |v - v_exact| = " + g(max) + " " + r.scales.velocity_name + " (" +
+          g(r.velocity_max_error) + ") at t = " + g(r.velocity_max_error_time) +
+          " (v = " + g(history.v[n]) + ", v_exact = " + g(exact.states[n].v) + "); tolerance " +
+          g(o.velocity_max_tolerance) + " " + r.scales.velocity_name);
+  const double rms = r.velocity_rms_error / r.scales.velocity;
   add(r, CheckKind::velocity_rms, rms <= o.velocity_rms_tolerance, rms, o.velocity_rms_tolerance,
-      "RMS(v - v_exact) = " + g(rms) + " B/(m w) (" + g(r.velocity_rms_error) +
-          ") over t = " + g(r.t_first) + " .. " + g(r.t_last) + "; tolerance " +
-          g(o.velocity_rms_tolerance) + " B/(m w)");
+      "RMS(v - v_exact) = " + g(rms) + " " + r.scales.velocity_name + " (" +
+          g(r.velocity_rms_error) + ") over t = " + g(r.t_first) + " .. " + g(r.t_last) +
+          "; tolerance " + g(o.velocity_rms_tolerance) + " " + r.scales.velocity_name);
 }
 
 void check_displacement(ComparisonReport& r, const TimeHistory& history, const ExactMotion& exact,
                         const ErrorStats& displacement) {
   const CompareOptions& o = r.options;
-  const double max = r.displacement_max_error / r.displacement_scale;
+  const double max = r.displacement_max_error / r.scales.displacement;
   const std::size_t n = displacement.max_row;
   add(r, CheckKind::displacement_max, max <= o.displacement_max_tolerance, max,
       o.displacement_max_tolerance,
-      "max |x - x_exact| = " + g(max) + " B/(m w^2) (" + g(r.displacement_max_error) +
-          ") at t = " + g(r.displacement_max_error_time) + " (x = " + g((*history.x)[n]) +
-          ", x_exact = " + g(exact.states[n].x) + "); tolerance " +
-          g(o.displacement_max_tolerance) + " B/(m w^2)");
+      "max |x - x_exact| = " + g(max) + " " + r.scales.displacement_name + " (" +
+          g(r.displacement_max_error) + ") at t = " + g(r.displacement_max_error_time) +
+          " (x = " + g((*history.x)[n]) + ", x_exact = " + g(exact.states[n].x) + "); tolerance " +
+          g(o.displacement_max_tolerance) + " " + r.scales.displacement_name);
 }
 
 void check_stop_times(ComparisonReport& r) {
@@ -62,7 +63,7 @@ void check_stop_times(ComparisonReport& r) {
     if (std::max(std::fabs(m.start_error), std::fabs(m.end_error)) > r.stop_time_margin)
       outside.push_back("stick " + std::to_string(m.number) + " " + interval(m.exact));
   }
-  const double relative = std::fabs(worst_error) / r.period;
+  const double relative = std::fabs(worst_error) / r.scales.period;
   std::string message;
   if (worst == nullptr) {
     message = "no stick to time (neither side shows a stick both share)";
@@ -70,8 +71,8 @@ void check_stop_times(ComparisonReport& r) {
     message = "worst: " + std::string(worst_is_end ? "end" : "start") + " of stick " +
               std::to_string(worst->number) + " (exact " + interval(worst->exact) + ", candidate " +
               interval(worst->candidate) + "): error " + signed_g(worst_error) + " = " +
-              g(relative) + " periods; tolerance " + g(o.stop_time_tolerance) + " periods (" +
-              g(r.stop_time_margin) + ")";
+              g(relative) + " " + r.scales.period_unit + "; tolerance " + g(o.stop_time_tolerance) +
+              " " + r.scales.period_unit + " (" + g(r.stop_time_margin) + ")";
     if (!outside.empty()) {
       message += "; " + std::to_string(outside.size()) + " of " + std::to_string(r.matched.size()) +
                  " sticks outside: ";
@@ -102,7 +103,7 @@ void check_stop_counts(ComparisonReport& r) {
 }
 
 void check_creep(ComparisonReport& r, std::size_t creep_phase) {
-  const double relative = r.creep_max_velocity / r.velocity_scale;
+  const double relative = r.creep_max_velocity / r.scales.velocity;
   std::string message;
   if (r.creep_samples == 0) {
     message = "no candidate sample inside an exact stick (less " + g(r.stop_time_margin) +
@@ -110,9 +111,10 @@ void check_creep(ComparisonReport& r, std::size_t creep_phase) {
   } else {
     const StickInterval& s = r.exact_phases[creep_phase];
     message = "max |v| inside the exact sticks (less " + g(r.stop_time_margin) +
-              " at each end) = " + g(relative) + " B/(m w) (" + g(r.creep_max_velocity) +
-              ") at t = " + g(r.creep_time) + " in the exact stick " + interval(s) +
-              "; must stay under the stick threshold " + g(r.options.stick_threshold) + " B/(m w)";
+              " at each end) = " + g(relative) + " " + r.scales.velocity_name + " (" +
+              g(r.creep_max_velocity) + ") at t = " + g(r.creep_time) + " in the exact stick " +
+              interval(s) + "; must stay under the stick threshold " +
+              g(r.options.stick_threshold) + " " + r.scales.velocity_name;
   }
   add(r, CheckKind::creep, r.creep_max_velocity < r.stick_velocity, relative,
       r.options.stick_threshold, message);
@@ -120,9 +122,10 @@ void check_creep(ComparisonReport& r, std::size_t creep_phase) {
 
 void check_regime(ComparisonReport& r) {
   const bool same = r.candidate_regime == r.exact_shown_regime;
-  const auto shown = [](Regime regime, double per_period) {
+  const std::string per = r.model.ground_motion ? "T*" : "period";
+  const auto shown = [&per](Regime regime, double per_period) {
     std::string s(to_string(regime));
-    if (regime != Regime::stops) s += " (" + g(per_period) + " sticks per period)";
+    if (regime != Regime::stops) s += " (" + g(per_period) + " sticks per " + per + ")";
     if (regime == Regime::stops) s += " (at rest throughout)";
     return s;
   };

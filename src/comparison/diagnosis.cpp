@@ -18,7 +18,7 @@ namespace {
 constexpr double kExplainedRms = 0.3;
 // Inside an exact stick, sign flips of v beyond this count are chattering;
 // fewer, with |v| above the stick threshold, are creep while |v| stays under
-// kCreepSpeed B/(m w), a slide through the stick above it.
+// kCreepSpeed velocity scales (B/(m w)), a slide through the stick above it.
 constexpr std::size_t kChatteringFlips = 3;
 constexpr double kCreepSpeed = 0.1;
 // An exact slip the candidate sits through must reach this many stick
@@ -67,7 +67,7 @@ class Samples {
 
   // Whether a fit that leaves `after` explains an error that was `before`.
   bool explains(const Residual& after, const Residual& before) const {
-    const double scale = r_.velocity_scale;
+    const double scale = r_.scales.velocity;
     return after.rms <= kExplainedRms * before.rms &&
            after.rms <= r_.options.velocity_rms_tolerance * scale &&
            after.max <= r_.options.velocity_max_tolerance * scale;
@@ -96,8 +96,9 @@ class Samples {
 };
 
 std::string rms_change(const ComparisonReport& r, const Residual& after, const Residual& before) {
-  return "RMS velocity error " + g(after.rms / r.velocity_scale) + " B/(m w) (was " +
-         g(before.rms / r.velocity_scale) + "), largest " + g(after.max / r.velocity_scale);
+  return "RMS velocity error " + g(after.rms / r.scales.velocity) + " " + r.scales.velocity_name +
+         " (was " + g(before.rms / r.scales.velocity) + "), largest " +
+         g(after.max / r.scales.velocity);
 }
 
 // v(t) = v_exact(t - shift): the linear estimate from the exact acceleration
@@ -132,10 +133,10 @@ std::optional<Diagnosis> time_shift(const ComparisonReport& r, const Samples& s,
     double step = -s.integral([&](std::size_t i) {
       return inside[i] ? shifted[i].a * (s.v()[i] - shifted[i].v) : 0.0;
     }) / d;
-    step = std::clamp(step, -0.25 * r.period, 0.25 * r.period);
+    step = std::clamp(step, -0.25 * r.scales.period, 0.25 * r.scales.period);
     if (!std::isfinite(step)) break;
     shift += step;
-    if (std::fabs(step) <= 1e-12 * r.period + 1e-15 * std::fabs(shift)) break;
+    if (std::fabs(step) <= 1e-12 * r.scales.period + 1e-15 * std::fabs(shift)) break;
   }
   evaluate_shifted();
   const Residual after =
@@ -145,9 +146,9 @@ std::optional<Diagnosis> time_shift(const ComparisonReport& r, const Samples& s,
   d.defect = Defect::time_shift;
   d.value = shift;
   d.evidence = "the candidate runs " + std::string(shift > 0 ? "late" : "early") + " by " +
-               g(std::fabs(shift)) + " (" + g(std::fabs(shift) / r.period) +
-               " periods): v(t) = v_exact(t " + (shift > 0 ? "- " : "+ ") + g(std::fabs(shift)) +
-               ") leaves " + rms_change(r, after, before);
+               g(std::fabs(shift)) + " (" + g(std::fabs(shift) / r.scales.period) + " " +
+               r.scales.period_unit + "): v(t) = v_exact(t " + (shift > 0 ? "- " : "+ ") +
+               g(std::fabs(shift)) + ") leaves " + rms_change(r, after, before);
   if (!r.matched.empty()) {
     double sum = 0, lo = r.matched.front().start_error, hi = lo;
     for (const MatchedStick& m : r.matched)
@@ -200,8 +201,8 @@ std::optional<Diagnosis> velocity_bias(const ComparisonReport& r, const Samples&
   Diagnosis d;
   d.defect = Defect::drift;
   d.value = bias;
-  d.evidence = "a constant velocity error of " + signed_g(bias / r.velocity_scale) + " B/(m w) (" +
-               signed_g(bias) +
+  d.evidence = "a constant velocity error of " + signed_g(bias / r.scales.velocity) + " " +
+               r.scales.velocity_name + " (" + signed_g(bias) +
                ") over the whole record, so the displacement "
                "error grows by " +
                g(std::fabs(bias) * s.total()) + " over it; removing it leaves " +
@@ -246,9 +247,9 @@ std::optional<Diagnosis> phase_anomalies(const ComparisonReport& r, const Sample
           ++anomaly.flips;
       }
       if (!moving) continue;
-      anomaly.defect = anomaly.flips >= kChatteringFlips                ? Defect::chattering
-                       : anomaly.speed < kCreepSpeed * r.velocity_scale ? Defect::creep
-                                                                        : Defect::missed_stop;
+      anomaly.defect = anomaly.flips >= kChatteringFlips                 ? Defect::chattering
+                       : anomaly.speed < kCreepSpeed * r.scales.velocity ? Defect::creep
+                                                                         : Defect::missed_stop;
     } else {
       ++slips_seen;
       bool at_rest = true;
@@ -273,7 +274,7 @@ std::optional<Diagnosis> phase_anomalies(const ComparisonReport& r, const Sample
       found.begin(), found.end(), [&](const Anomaly& x) { return x.defect == e.defect; }));
   const std::string count = g(d.value);
   const std::string where = interval(e.start, e.end);
-  const std::string speed = g(e.speed / r.velocity_scale) + " B/(m w)";
+  const std::string speed = g(e.speed / r.scales.velocity) + " " + r.scales.velocity_name;
   switch (e.defect) {
     case Defect::chattering:
       d.evidence = "v changes sign " + std::to_string(e.flips) + " times inside the exact stick " +
@@ -324,7 +325,7 @@ std::optional<Diagnosis> displacement_line(const ComparisonReport& r, const Time
   const std::vector<double>& x = *history.x;
   const std::vector<State>& at = s.exact().states;
   const auto error = [&](std::size_t i) { return x[i] - at[i].x; };
-  const double tolerance = r.options.displacement_max_tolerance * r.displacement_scale;
+  const double tolerance = r.options.displacement_max_tolerance * r.scales.displacement;
   const double mean = s.integral(error) / s.total();
   const double t_mean = s.integral([&](std::size_t i) { return s.t()[i]; }) / s.total();
   const double var = s.integral([&](std::size_t i) {
@@ -343,8 +344,8 @@ std::optional<Diagnosis> displacement_line(const ComparisonReport& r, const Time
     d.defect = Defect::offset;
     d.value = mean;
     d.evidence = "x = x_exact " + std::string(mean < 0 ? "- " : "+ ") + g(std::fabs(mean)) + " (" +
-                 signed_g(mean / r.displacement_scale) + " B/(m w^2)) throughout, within " +
-                 g(offset_max) +
+                 signed_g(mean / r.scales.displacement) + " " + r.scales.displacement_name +
+                 ") throughout, within " + g(offset_max) +
                  ": the velocity is right; the initial position or the reference differs";
     return d;
   }

@@ -33,15 +33,23 @@ Shown shown_regime(const std::vector<double>& t, const std::vector<double>& v,
 void read_regime(ComparisonReport& r, const std::vector<double>& t,
                  const std::vector<double>& v_exact, const std::vector<double>& v) {
   const double record = r.t_last - r.t_first;
-  const double window = std::min(r.options.regime_window * r.period, record);
+  const double window = std::min(r.options.regime_window * r.scales.period, record);
   r.regime_window_start = r.t_last - window;
-  const Classification steady = classify(r.model);
-  r.exact_regime = steady.regime;
-  r.exact_regime_method = steady.method;
+  if (r.model.ground_motion) {
+    // The ground is still after the record's last sample, so friction brings
+    // the block to rest in a finite time and it stays there: the steady state
+    // is known in closed form without classify (which refuses a transient).
+    r.exact_regime = Regime::stops;
+    r.exact_regime_method = ClassificationMethod::closed_form;
+  } else {
+    const Classification steady = classify(r.model);
+    r.exact_regime = steady.regime;
+    r.exact_regime_method = steady.method;
+  }
   const Shown exact = shown_regime(t, v_exact, r.exact_sticks, r.regime_window_start,
-                                   r.stick_velocity, window / r.period);
+                                   r.stick_velocity, window / r.scales.period);
   const Shown candidate = shown_regime(t, v, r.candidate_sticks, r.regime_window_start,
-                                       r.stick_velocity, window / r.period);
+                                       r.stick_velocity, window / r.scales.period);
   r.exact_shown_regime = exact.regime;
   r.exact_stops_per_period = exact.stops_per_period;
   r.candidate_regime = candidate.regime;

@@ -95,21 +95,24 @@ std::string comparison_json(const ComparisonReport& r, std::string_view command_
                     {"max_extra_stops", o.max_extra_stops},
                     {"displacement_max_tolerance", o.displacement_max_tolerance},
                     {"regime_window", o.regime_window}};
-  out["scales"] = {{"velocity", r.velocity_scale},
-                   {"displacement", r.displacement_scale},
-                   {"period", r.period},
+  out["scales"] = {{"velocity", r.scales.velocity},
+                   {"displacement", r.scales.displacement},
+                   {"period", r.scales.period},
+                   {"velocity_name", r.scales.velocity_name},
+                   {"displacement_name", r.scales.displacement_name},
+                   {"period_name", r.scales.period_name},
                    {"stick_velocity", r.stick_velocity},
                    {"min_stick_time", r.min_stick_time},
                    {"stop_time_margin", r.stop_time_margin}};
-  out["velocity_error"] = error_json(r.velocity_max_error, r.velocity_scale,
+  out["velocity_error"] = error_json(r.velocity_max_error, r.scales.velocity,
                                      r.velocity_max_error_time, r.velocity_rms_error);
   out["displacement_error"] =
-      r.has_displacement ? error_json(r.displacement_max_error, r.displacement_scale,
+      r.has_displacement ? error_json(r.displacement_max_error, r.scales.displacement,
                                       r.displacement_max_error_time, r.displacement_rms_error)
                          : json(nullptr);
   out["sticks"] = sticks_json(r);
   out["creep"] = {{"max_velocity", r.creep_max_velocity},
-                  {"max_relative", r.creep_max_velocity / r.velocity_scale},
+                  {"max_relative", r.creep_max_velocity / r.scales.velocity},
                   {"time", r.creep_time},
                   {"samples", r.creep_samples}};
   out["regime"] = {{"candidate", std::string(to_string(r.candidate_regime))},

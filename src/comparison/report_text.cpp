@@ -183,38 +183,40 @@ std::string ComparisonReport::brief_report() const {
 
 std::string ComparisonReport::full_report() const {
   const CompareOptions& o = options;
+  const std::string v_unit = " " + scales.velocity_name;
+  const std::string x_unit = " " + scales.displacement_name;
+  const std::string t_unit = " " + scales.period_unit;
   std::string out = "diagnosis: " + diagnosis.text() + "\n";
   out += "candidate: " + source + "\n";
   out += "model: " + model_fields(model) + "\n";
   out += "record: " + std::to_string(rows) + " rows, t = " + g(t_first) + " .. " + g(t_last) +
-         " (" + g((t_last - t_first) / period) + " periods), largest spacing " + g(max_spacing) +
-         "\n";
-  out += "scales: velocity B/(m w) = " + g(velocity_scale) +
-         ", displacement B/(m w^2) = " + g(displacement_scale) +
-         ", period 2 pi / w = " + g(period) + "\n";
-  out += "stick detection: |v| < " + g(o.stick_threshold) + " B/(m w) = " + g(stick_velocity) +
-         " for at least " + g(o.min_stick_duration) + " periods = " + g(min_stick_time) + "\n";
-  out +=
-      "tolerances: velocity_max " + g(o.velocity_max_tolerance) +
-      " B/(m w) = " + g(o.velocity_max_tolerance * velocity_scale) + ", velocity_rms " +
-      g(o.velocity_rms_tolerance) + " B/(m w) = " + g(o.velocity_rms_tolerance * velocity_scale) +
-      ", stop_time " + g(o.stop_time_tolerance) + " periods = " + g(stop_time_margin) +
-      ", missed_stops " + std::to_string(o.max_missed_stops) + ", extra_stops " +
-      std::to_string(o.max_extra_stops) + ", creep under the stick threshold, regime equal" +
-      (has_displacement ? ", displacement_max " + g(o.displacement_max_tolerance) +
-                              " B/(m w^2) = " + g(o.displacement_max_tolerance * displacement_scale)
-                        : std::string()) +
-      "; regime window " + g(o.regime_window) + " periods\n";
+         " (" + g((t_last - t_first) / scales.period) + t_unit + "), largest spacing " +
+         g(max_spacing) + "\n";
+  out += "scales: velocity " + scales.velocity_name + " = " + g(scales.velocity) +
+         ", displacement " + scales.displacement_name + " = " + g(scales.displacement) + ", " +
+         scales.period_name + " = " + g(scales.period) + "\n";
+  out += "stick detection: |v| < " + g(o.stick_threshold) + v_unit + " = " + g(stick_velocity) +
+         " for at least " + g(o.min_stick_duration) + t_unit + " = " + g(min_stick_time) + "\n";
+  out += "tolerances: velocity_max " + g(o.velocity_max_tolerance) + v_unit + " = " +
+         g(o.velocity_max_tolerance * scales.velocity) + ", velocity_rms " +
+         g(o.velocity_rms_tolerance) + v_unit + " = " +
+         g(o.velocity_rms_tolerance * scales.velocity) + ", stop_time " + g(o.stop_time_tolerance) +
+         t_unit + " = " + g(stop_time_margin) + ", missed_stops " +
+         std::to_string(o.max_missed_stops) + ", extra_stops " + std::to_string(o.max_extra_stops) +
+         ", creep under the stick threshold, regime equal" +
+         (has_displacement ? ", displacement_max " + g(o.displacement_max_tolerance) + x_unit +
+                                 " = " + g(o.displacement_max_tolerance * scales.displacement)
+                           : std::string()) +
+         "; regime window " + g(o.regime_window) + t_unit + "\n";
   out += "velocity error: max " + g(velocity_max_error) + " (" +
-         g(velocity_max_error / velocity_scale) + " B/(m w)) at t = " + g(velocity_max_error_time) +
-         ", rms " + g(velocity_rms_error) + " (" + g(velocity_rms_error / velocity_scale) +
-         " B/(m w))\n";
+         g(velocity_max_error / scales.velocity) + v_unit +
+         ") at t = " + g(velocity_max_error_time) + ", rms " + g(velocity_rms_error) + " (" +
+         g(velocity_rms_error / scales.velocity) + v_unit + ")\n";
   if (has_displacement)
     out += "displacement error: max " + g(displacement_max_error) + " (" +
-           g(displacement_max_error / displacement_scale) +
-           " B/(m w^2)) at t = " + g(displacement_max_error_time) + ", rms " +
-           g(displacement_rms_error) + " (" + g(displacement_rms_error / displacement_scale) +
-           " B/(m w^2))\n";
+           g(displacement_max_error / scales.displacement) + x_unit +
+           ") at t = " + g(displacement_max_error_time) + ", rms " + g(displacement_rms_error) +
+           " (" + g(displacement_rms_error / scales.displacement) + x_unit + ")\n";
   out += "sticks: exact " + std::to_string(exact_sticks.size()) + " (engine stick phases " +
          std::to_string(exact_phases.size()) + "), candidate " +
          std::to_string(candidate_sticks.size()) + ", matched " + std::to_string(matched.size()) +

@@ -81,7 +81,7 @@ ReportFigures report_figures(const ComparisonReport& report, const TimeHistory& 
   difference.y_label = "v - v_exact [length/time]";
   difference.lines.push_back(
       line("candidate - exact", decimated(history.t, error, max_points), candidate_color, 1.3));
-  const double tolerance = report.options.velocity_max_tolerance * report.velocity_scale;
+  const double tolerance = report.options.velocity_max_tolerance * report.scales.velocity;
   difference.horizontal = {
       {tolerance, fmt::format("velocity_max tolerance +-{:.6g}", tolerance), tolerance_color},
       {-tolerance, "", tolerance_color}};

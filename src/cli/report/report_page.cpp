@@ -61,16 +61,16 @@ void header_row(HtmlWriter& html, const std::vector<std::string>& cells) {
 }
 
 // Each check's value and tolerance are in this unit.
-std::string check_unit(CheckKind kind) {
+std::string check_unit(CheckKind kind, const MotionScales& scales) {
   switch (kind) {
     case CheckKind::velocity_max:
     case CheckKind::velocity_rms:
     case CheckKind::creep:
-      return "B/(m w)";
+      return scales.velocity_name;
     case CheckKind::displacement_max:
-      return "B/(m w^2)";
+      return scales.displacement_name;
     case CheckKind::stop_times:
-      return "periods 2 pi/w";
+      return scales.period_unit;
     case CheckKind::missed_stops:
     case CheckKind::extra_stops:
       return "sticks";
@@ -152,9 +152,10 @@ void model_section(HtmlWriter& html, const ComparisonReport& r) {
   html.close("table");
   html.element("p",
                fmt::format("Steady state of this model: {} ({}). Scales of the checks: velocity "
-                           "B/(m w) = {}, displacement B/(m w^2) = {}, period 2 pi/w = {}.",
+                           "{} = {}, displacement {} = {}, {} = {}.",
                            to_string(r.exact_regime), to_string(r.exact_regime_method),
-                           g(r.velocity_scale), g(r.displacement_scale), g(r.period)));
+                           r.scales.velocity_name, g(r.scales.velocity), r.scales.displacement_name,
+                           g(r.scales.displacement), r.scales.period_name, g(r.scales.period)));
 }
 
 void checks_section(HtmlWriter& html, const ComparisonReport& r) {
@@ -190,7 +191,7 @@ void checks_section(HtmlWriter& html, const ComparisonReport& r) {
     html.element("td", result, {{"class", result}});
     html.element("td", g(check.value), {{"class", "number"}});
     html.element("td", g(check.tolerance), {{"class", "number"}});
-    html.element("td", check_unit(check.kind));
+    html.element("td", check_unit(check.kind, r.scales));
     html.element("td", check.message);
     html.close("tr");
   }
@@ -208,11 +209,11 @@ void checks_section(HtmlWriter& html, const ComparisonReport& r) {
       numeric);
   row(html,
       {"--velocity-tolerance", g(o.velocity_max_tolerance),
-       g(o.velocity_max_tolerance * r.velocity_scale) + " length/time"},
+       g(o.velocity_max_tolerance * r.scales.velocity) + " length/time"},
       numeric);
   row(html,
       {"--velocity-rms-tolerance", g(o.velocity_rms_tolerance),
-       g(o.velocity_rms_tolerance * r.velocity_scale) + " length/time"},
+       g(o.velocity_rms_tolerance * r.scales.velocity) + " length/time"},
       numeric);
   row(html, {"--stop-time-tolerance", g(o.stop_time_tolerance), g(r.stop_time_margin) + " time"},
       numeric);
@@ -221,9 +222,9 @@ void checks_section(HtmlWriter& html, const ComparisonReport& r) {
   if (r.has_displacement)
     row(html,
         {"--displacement-tolerance", g(o.displacement_max_tolerance),
-         g(o.displacement_max_tolerance * r.displacement_scale) + " length"},
+         g(o.displacement_max_tolerance * r.scales.displacement) + " length"},
         numeric);
-  row(html, {"--regime-window", g(o.regime_window), g(o.regime_window * r.period) + " time"},
+  row(html, {"--regime-window", g(o.regime_window), g(o.regime_window * r.scales.period) + " time"},
       numeric);
   html.close("tbody");
   html.close("table");
@@ -250,9 +251,9 @@ void figures_section(HtmlWriter& html, const ComparisonReport& r, const TimeHist
          "the candidate's (orange).");
   figure(html, figures.error,
          fmt::format("Figure 2. The candidate's velocity error at its own times, with the "
-                     "velocity_max tolerance {} B/(m w) (dashed). Largest error {} at t = {}.",
-                     g(r.options.velocity_max_tolerance), g(r.velocity_max_error),
-                     g(r.velocity_max_error_time)));
+                     "velocity_max tolerance {} {} (dashed). Largest error {} at t = {}.",
+                     g(r.options.velocity_max_tolerance), r.scales.velocity_name,
+                     g(r.velocity_max_error), g(r.velocity_max_error_time)));
   figure(html, figures.zoom,
          "Figure 3. " + figures.zoom_caption +
              " Dots: the candidate's samples; dashed: the stick threshold and the stops.");
@@ -280,23 +281,25 @@ void omitted(HtmlWriter& html, std::size_t total) {
 void events_section(HtmlWriter& html, const ComparisonReport& r) {
   html.element("h2", "5. Event matching", {{"id", "events"}});
   html.element(
-      "p",
-      fmt::format("Sticks are runs of samples with |v| < {} (the stick threshold) lasting "
-                  "at least {}, found the same way in the candidate's velocity and in the "
-                  "exact velocity at the candidate's times. The exact motion shows {} "
-                  "sticks, the candidate {}; {} are matched, {} missed, {} extra. Errors "
-                  "are candidate - exact, in time units and in periods.",
-                  g(r.stick_velocity), g(r.min_stick_time), r.exact_sticks.size(),
-                  r.candidate_sticks.size(), r.matched.size(), r.missed.size(), r.extra.size()));
+      "p", fmt::format("Sticks are runs of samples with |v| < {} (the stick threshold) lasting "
+                       "at least {}, found the same way in the candidate's velocity and in the "
+                       "exact velocity at the candidate's times. The exact motion shows {} "
+                       "sticks, the candidate {}; {} are matched, {} missed, {} extra. Errors "
+                       "are candidate - exact, in time units and in {}.",
+                       g(r.stick_velocity), g(r.min_stick_time), r.exact_sticks.size(),
+                       r.candidate_sticks.size(), r.matched.size(), r.missed.size(), r.extra.size(),
+                       r.scales.period_unit));
   html.element("h3", "Matched sticks");
   html.open("div", {{"class", "scroll"}});
   html.open("table", {{"id", "matched-sticks"}, {"class", "events"}});
-  header_row(html, {"#", "exact start", "exact end", "candidate start", "candidate end",
-                    "start error", "end error", "worst [periods]", "exact stick phase"});
+  header_row(html,
+             {"#", "exact start", "exact end", "candidate start", "candidate end", "start error",
+              "end error", "worst [" + r.scales.period_unit + "]", "exact stick phase"});
   html.open("tbody");
   for (std::size_t i = 0; i < r.matched.size() && i < max_table_rows; ++i) {
     const MatchedStick& m = r.matched[i];
-    const double worst = std::max(std::fabs(m.start_error), std::fabs(m.end_error)) / r.period;
+    const double worst =
+        std::max(std::fabs(m.start_error), std::fabs(m.end_error)) / r.scales.period;
     const std::string phase =
         std::isnan(m.phase_start) ? "none" : g(m.phase_start) + " .. " + g(m.phase_end);
     row(html,
@@ -324,7 +327,8 @@ void events_section(HtmlWriter& html, const ComparisonReport& r) {
   }
   html.element("h3", "Regime");
   html.open("table");
-  header_row(html, {"", "regime", "sticks per period"});
+  header_row(
+      html, {"", "regime", std::string("sticks per ") + (r.model.ground_motion ? "T*" : "period")});
   html.open("tbody");
   row(html,
       {"candidate", std::string(to_string(r.candidate_regime)), g(r.candidate_stops_per_period)},

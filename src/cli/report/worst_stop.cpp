@@ -7,7 +7,7 @@
 namespace frictionref::cli {
 
 double stop_window(const ComparisonReport& report) {
-  return std::max(0.05 * report.period, 5 * report.max_spacing);
+  return std::max(0.05 * report.scales.period, 5 * report.max_spacing);
 }
 
 std::optional<WorstStop> worst_stop(const ComparisonReport& report, const TimeHistory& history,
