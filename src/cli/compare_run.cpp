@@ -10,6 +10,7 @@
 #include <map>
 
 #include "csv_format.hpp"
+#include "frictionref/motion_scales.hpp"
 #include "frictionref/sampling.hpp"
 
 namespace frictionref::cli {
@@ -93,8 +94,9 @@ void CompareInputs::add_to(CLI::App& command, ModelOptions& model) {
       ->capture_default_str();
 
   const char* checks =
-      "Checks (relative to the model: velocities in B/(m w), displacements in B/(m w^2), times "
-      "in forcing periods 2 pi / w)";
+      "Checks (relative to the forcing: velocities in B/(m w), displacements in B/(m w^2), times "
+      "in periods 2 pi / w; with --ground-accel in the record's PGV, PGV^2/PGA and "
+      "T* = 2 pi PGV/PGA instead)";
   const auto number_option = [&](const char* name, std::string& text, const char* help,
                                  const char* type) {
     numeric(command.add_option(name, text, help))
@@ -167,15 +169,9 @@ PreparedComparison prepare_comparison(const CompareInputs& typed, const ModelOpt
   options.max_missed_stops = parse_count({"--max-missed-stops", typed.max_missed_stops});
   options.max_extra_stops = parse_count({"--max-extra-stops", typed.max_extra_stops});
   translating(inputs, [&] { options.validate(); });
-  refuse_ground_motion(
-      prepared.model, "compare",
-      "not yet: its velocities are judged relative to B/(m w), which a record does not have (newmark "
-      "--method slammer is a numerical peer for records; events and curve give the exact motion)");
-  if (!(prepared.model.amplitude > 0))
-    throw bad_input(
-        fmt::format("--amplitude = {}: must be > 0 to compare (velocities are judged "
-                    "relative to B/(m w))",
-                    inputs.at("amplitude").text));
+  // The scales every tolerance is relative to exist (B > 0, or a record
+  // that is not zero throughout).
+  translating(inputs, [&] { (void)motion_scales(prepared.model, "to compare"); });
   prepared.read_options.time_column = typed.time_column;
   prepared.read_options.velocity_column = typed.velocity_column;
   prepared.read_options.displacement_column = typed.displacement_column;

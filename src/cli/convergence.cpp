@@ -18,6 +18,7 @@
 #include "csv_format.hpp"
 #include "figure.hpp"
 #include "frictionref/comparison.hpp"
+#include "frictionref/motion_scales.hpp"
 #include "frictionref/stiff_spring.hpp"
 #include "model_options.hpp"
 #include "model_title.hpp"
@@ -97,7 +98,7 @@ void write_csv(std::FILE* out, const std::vector<Run>& runs) {
   for (const Run& r : runs) {
     fmt::print(out, "{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", number(r.kf),
                number(r.dt_fraction), number(r.dt), r.steps, number(r.report.velocity_max_error),
-               number(r.report.velocity_max_error / r.report.velocity_scale),
+               number(r.report.velocity_max_error / r.report.scales.velocity),
                number(r.report.velocity_rms_error), csv_number(r.stop_time_error),
                r.report.matched.size(), r.report.missed.size(), r.report.extra.size(),
                to_string(r.report.verdict), csv_number(r.order_velocity),
@@ -105,28 +106,28 @@ void write_csv(std::FILE* out, const std::vector<Run>& runs) {
   }
 }
 
-void write_markdown(std::FILE* out, const std::vector<Run>& runs) {
+void write_markdown(std::FILE* out, const std::vector<Run>& runs, const MotionScales& scales) {
   const auto g = [](double value) {
     return std::isnan(value) ? std::string("-") : fmt::format("{:.3g}", value);
   };
-  std::fputs(
-      "| K_f | dt / limit | dt | max \\|v error\\| / (B/(m w)) | max stop-time error | "
-      "matched / missed / extra stops | order (v) | order (stop) | compare |\n"
-      "|---|---|---|---|---|---|---|---|---|\n",
-      out);
+  fmt::print(out,
+             "| K_f | dt / limit | dt | max \\|v error\\| / ({}) | max stop-time error | "
+             "matched / missed / extra stops | order (v) | order (stop) | compare |\n"
+             "|---|---|---|---|---|---|---|---|---|\n",
+             scales.velocity_name);
   for (const Run& r : runs) {
     fmt::print(out, "| {} | {} | {} | {} | {} | {} / {} / {} | {} | {} | {} |\n", g(r.kf),
-               g(r.dt_fraction), g(r.dt), g(r.report.velocity_max_error / r.report.velocity_scale),
+               g(r.dt_fraction), g(r.dt), g(r.report.velocity_max_error / r.report.scales.velocity),
                g(r.stop_time_error), r.report.matched.size(), r.report.missed.size(),
                r.report.extra.size(), g(r.order_velocity), g(r.order_stop_time),
                to_string(r.report.verdict));
   }
 }
 
-Figure convergence_figure(const Model& model, const std::vector<Run>& runs,
-                          const std::vector<double>& fractions) {
-  Panel velocity =
-      make_panel("max velocity error", "K_f [force/length]", "max |v - v_exact| / (B/(m w))", {});
+Figure convergence_figure(const Model& model, const MotionScales& scales,
+                          const std::vector<Run>& runs, const std::vector<double>& fractions) {
+  Panel velocity = make_panel("max velocity error", "K_f [force/length]",
+                              "max |v - v_exact| / (" + scales.velocity_name + ")", {});
   Panel stops = make_panel("max stop-time error (matched sticks)", "K_f [force/length]",
                            "max |t_stiff - t_exact| [time]", {});
   velocity.log_x = velocity.log_y = stops.log_x = stops.log_y = true;
@@ -140,7 +141,7 @@ Figure convergence_figure(const Model& model, const std::vector<Run>& runs,
     Series s = v;
     for (const Run& r : runs) {
       if (r.dt_fraction != fraction) continue;
-      const double relative = r.report.velocity_max_error / r.report.velocity_scale;
+      const double relative = r.report.velocity_max_error / r.report.scales.velocity;
       if (relative > 0) v.x.push_back(r.kf), v.y.push_back(relative);
       if (r.stop_time_error > 0) s.x.push_back(r.kf), s.y.push_back(r.stop_time_error);
     }
@@ -173,15 +174,10 @@ ExitCode run_convergence(const ConvergenceOptions& options, const Invocation& in
                       options.dt_fractions));
   if (options.format != "csv" && options.format != "markdown")
     throw bad_input(fmt::format("--format = {}: must be csv or markdown", options.format));
-  refuse_ground_motion(model, "convergence",
-                       "not yet: its errors are relative to B/(m w), which a record does not have (stiff "
-                       "runs the penalty model on a record; newmark --method slammer is a "
-                       "numerical peer)");
-  if (!(model.amplitude > 0))
-    throw bad_input(
-        fmt::format("--amplitude = {}: must be > 0 for convergence (errors are "
-                    "relative to B/(m w))",
-                    model.amplitude));
+  // The scales the errors are relative to exist (B > 0, or a record that is
+  // not zero throughout).
+  const MotionScales scales =
+      naming_options(inputs, [&] { return motion_scales(model, "for convergence"); });
   if (!options.plot.empty()) require_figure_path(options.plot, "--plot");
 
   // Every run is validated before any is computed: bad input costs nothing.
@@ -249,10 +245,10 @@ ExitCode run_convergence(const ConvergenceOptions& options, const Invocation& in
     write_metadata(out.stream(), model, invocation.command_line, metadata);
     write_csv(out.stream(), runs);
   } else {
-    write_markdown(out.stream(), runs);
+    write_markdown(out.stream(), runs, scales);
   }
   if (!options.plot.empty())
-    write_figure(convergence_figure(model, runs, fractions), options.plot, "--plot");
+    write_figure(convergence_figure(model, scales, runs, fractions), options.plot, "--plot");
   out.commit();
   return exit_success;
 }
