@@ -23,6 +23,7 @@ same one-line messages, raised as ValueError; wrong types raise TypeError):
     stiff(model, t_end)      the stiff-spring (penalty) model
     compare(model, t, v)     another code's time history against the exact one
     sweep(...), map(...)     parameter studies on all cores, by shards
+    newmark(records, ky)     Newmark's sliding block on ground-motion records
     distributed.map(client, ...)  a map on a Dask cluster, by shards
 
 Messages name the parameter as the command line spells it ("--mass",
@@ -39,6 +40,7 @@ from ._frictionref import (  # noqa: F401
     curve,
     events,
     map,
+    newmark,
     phases,
     regime_threshold,
     stiff,
@@ -55,6 +57,7 @@ __all__ = [
     "curve",
     "events",
     "map",
+    "newmark",
     "phases",
     "regime_threshold",
     "stiff",

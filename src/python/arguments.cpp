@@ -74,6 +74,21 @@ bool flag(py::handle object, const std::string& keyword) {
   return py::cast<bool>(py::bool_(py::reinterpret_borrow<py::object>(object)));
 }
 
+std::string path(py::handle object, const std::string& keyword, const std::string& option) {
+  const py::module_ os = py::module_::import("os");
+  if (!PyUnicode_Check(object.ptr()) && !PyBytes_Check(object.ptr()) &&
+      !py::isinstance(object, os.attr("PathLike")))
+    type_error(keyword + " must be a path (str, bytes or os.PathLike), not " + type_name(object));
+  // The file system's bytes (os.fsencode), which a name that is not UTF-8 keeps.
+  const std::string text = os.attr("fsencode")(object).cast<py::bytes>();
+  if (text == "-")
+    value_error(option + " = -: standard input is read by the command line only; give a file");
+  // The file system would stop at it and open another file.
+  if (text.find('\0') != std::string::npos)
+    value_error(option + ": a path cannot hold a NUL character");
+  return text;
+}
+
 py::array_t<double> float_array(py::handle object, const std::string& keyword) {
   const py::module_ numpy = py::module_::import("numpy");
   py::array array;

@@ -34,6 +34,12 @@ Number whole(py::handle object, const std::string& keyword);
 // True or False (TypeError otherwise; numpy bools accepted).
 bool flag(py::handle object, const std::string& keyword);
 
+// A file's path: str, bytes or os.PathLike (TypeError otherwise), as the
+// file system's bytes. "-", standard input for the command line, is refused
+// (ValueError naming `option`): the module does not read the interpreter's
+// standard input.
+std::string path(py::handle object, const std::string& keyword, const std::string& option);
+
 // A one-dimensional array of real numbers as contiguous float64 (copied only
 // if it is not already): TypeError for other dtypes (strings, complex,
 // objects, bools), ValueError for another number of dimensions.

@@ -67,6 +67,11 @@ py::dict compare_history(const PyModel& model, py::handle t_object, py::handle v
   options.max_missed_stops = stop_count(max_missed_stops, "max_missed_stops", "--max-missed-stops");
   options.max_extra_stops = stop_count(max_extra_stops, "max_extra_stops", "--max-extra-stops");
   naming(inputs, [&] { options.validate(); });
+  // The CLI's refusal (src/cli/compare_run.cpp), before the library's own.
+  refuse_record(model.model, "compare",
+                "not yet: its velocities are judged relative to B/(m w), which a record does not "
+                "have (newmark --method slammer is a numerical peer for records; events and curve "
+                "give the exact motion)");
   if (!(model.model.amplitude > 0))
     value_error("--amplitude = " + inputs.at("amplitude").text +
                 ": must be > 0 to compare (velocities are judged relative to B/(m w))");

@@ -68,6 +68,10 @@ py::array parameter_map_of(py::handle x_object, py::handle y_object, py::handle 
   const ModelInput input = take_model_input(rest, {/*friction_required=*/false});
   refuse_unknown(rest, "map");
   const Model base = build_model(input);
+  // The CLI refuses a record here, before the axes (src/cli/map.cpp).
+  refuse_record(base, "map",
+                "it maps steady states, which a record (a transient) does not have "
+                "(newmark runs records x yield accelerations)");
   const std::string x_spec = axis_spec(x_object, "x");
   const std::string y_spec = axis_spec(y_object, "y");
   const MapAxis x = axis(x_spec, "--x");

@@ -28,15 +28,19 @@ struct ModelKeywords {
 // spellings of one option ("--friction excludes --lambda", as the CLI).
 ModelInput take_model_input(py::dict& kwargs, const ModelKeywords& keywords);
 
-// The validated model of `input`: ValueError with the CLI's message.
+// The validated model of `input`: ValueError with the CLI's message. A
+// record's file is read without the GIL.
 Model build_model(const ModelInput& input);
+
+// ValueError "--ground-accel = FILE: is not taken by <command>: <why>" if the
+// model has a record: the CLI's refuse_ground_motion (src/cli/model_options.hpp),
+// for the commands that refuse one before the library would.
+void refuse_record(const Model& model, const std::string& command, const std::string& why);
 
 // TypeError for any keyword left in `kwargs`, naming `function`.
 void refuse_unknown(const py::dict& kwargs, const std::string& function);
 
 // The model as a dict, the `model` object of the CLI's JSON outputs.
 py::dict model_dict(const Model& model);
-
-
 
 }  // namespace frictionref::python

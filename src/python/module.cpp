@@ -17,4 +17,5 @@ PYBIND11_MODULE(_frictionref, m) {
   python::bind_compare(m);
   python::bind_sweep(m);
   python::bind_map(m);
+  python::bind_newmark(m);
 }

@@ -17,5 +17,6 @@ void bind_stiff(py::module_& m);     // stiff.cpp: stiff()
 void bind_compare(py::module_& m);   // compare.cpp: compare()
 void bind_sweep(py::module_& m);     // sweep.cpp: sweep()
 void bind_map(py::module_& m);       // map.cpp: map()
+void bind_newmark(py::module_& m);   // newmark.cpp: newmark()
 
 }  // namespace frictionref::python

@@ -65,6 +65,7 @@ void refuse_fixed(const py::dict& kwargs) {
                {"lambda", "--lambda"},
                {"static_friction", "--static-friction"},
                {"static_lambda", "--static-lambda"},
+               {"yield_accel", "--yield-accel"},
                {"t0", "--t0"}};
   for (const auto& f : fixed) {
     if (!kwargs.contains(f.keyword)) continue;
@@ -73,7 +74,7 @@ void refuse_fixed(const py::dict& kwargs) {
     const std::string given =
         value.is_none() ? option : option + " = " + number(value, f.keyword).text;
     if (option == "--t0") value_error(given + ": not a sweep option; every run starts at t = 0");
-    if (option == "--friction" || option == "--lambda")
+    if (option == "--friction" || option == "--lambda" || option == "--yield-accel")
       value_error(given +
                   ": not a sweep option; the sweep sets R = lambda B for lambda from "
                   "--lambda-from to --lambda-to");
