@@ -8,6 +8,7 @@
 #include "arguments.hpp"
 #include "errors.hpp"
 #include "frictionref/comparison.hpp"
+#include "frictionref/motion_scales.hpp"
 #include "frictionref/comparison_json.hpp"
 #include "model.hpp"
 #include "module.hpp"
@@ -67,14 +68,9 @@ py::dict compare_history(const PyModel& model, py::handle t_object, py::handle v
   options.max_missed_stops = stop_count(max_missed_stops, "max_missed_stops", "--max-missed-stops");
   options.max_extra_stops = stop_count(max_extra_stops, "max_extra_stops", "--max-extra-stops");
   naming(inputs, [&] { options.validate(); });
-  // The CLI's refusal (src/cli/compare_run.cpp), before the library's own.
-  refuse_record(model.model, "compare",
-                "not yet: its velocities are judged relative to B/(m w), which a record does not "
-                "have (newmark --method slammer is a numerical peer for records; events and curve "
-                "give the exact motion)");
-  if (!(model.model.amplitude > 0))
-    value_error("--amplitude = " + inputs.at("amplitude").text +
-                ": must be > 0 to compare (velocities are judged relative to B/(m w))");
+  // The scales every tolerance is relative to exist (B > 0, or a record that
+  // is not zero throughout), checked as the CLI does before the candidate.
+  naming(inputs, [&] { (void)motion_scales(model.model, "to compare"); });
 
   TimeHistory history;
   history.t = column(t_object, "t");
@@ -112,7 +108,7 @@ void bind_compare(py::module_& m) {
         R"doc(Checks another code's time history (times t, velocities v, optionally
 positions x; 1-D arrays of equal length, t non-decreasing, from model.t0 on)
 against the exact solution at those very times (the CLI's `compare`;
-docs/cross-checking.md). Needs amplitude B > 0.
+docs/cross-checking.md). Needs amplitude B > 0, or a record (ground_accel).
 
 Returns the report as a dict with the keys of `compare --json`: verdict
 ('PASS', 'FAIL' or 'INCONCLUSIVE': every check passed but the samples do not
@@ -122,7 +118,8 @@ message), candidate, model, options, scales, velocity_error,
 displacement_error (None without x), sticks, creep, regime, notes, version,
 and report (the CLI's text report). Tolerances as the CLI's options, in
 B/(m w) for velocities, B/(m w^2) for positions and forcing periods for
-times: stick_threshold, min_stick_duration, velocity_tolerance,
+times (with a record: its PGV, PGV^2/PGA and T* = 2 pi PGV/PGA; scales
+names them): stick_threshold, min_stick_duration, velocity_tolerance,
 velocity_rms_tolerance, stop_time_tolerance, max_missed_stops,
 max_extra_stops, displacement_tolerance, regime_window.
 

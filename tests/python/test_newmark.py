@@ -212,6 +212,33 @@ def test_model_with_a_record_events_curve_summary_by_hand(tmp_path):
     assert close(s["x"], permanent) and s["v"] == 0 and s["slip+"] == 1 and s["slip-"] == 0
 
 
+def test_compare_with_a_record_in_its_scales(tmp_path):
+    """The hand solution above as a candidate passes, in the record's scales:
+    PGV = a T (the ground's velocity after the pulse), PGA = a,
+    T* = 2 pi PGV / PGA = 2 pi T; twice the deceleration after the pulse
+    fails."""
+    a_g, duration, ky = 0.5, 2.0, 0.2
+    record = write_pulse(tmp_path / "pulse.csv", a_g, duration)
+    model = M(ground_accel=record, yield_accel=ky, inverse=True, one_way=True)
+    a, mu = a_g * G, ky * G
+
+    def candidate(decel):
+        t = np.linspace(0, 10, 1001)
+        v_t = (a - mu) * duration
+        v = np.where(t <= duration, (a - mu) * t, np.maximum(v_t - decel * (t - duration), 0))
+        return t, v
+
+    report = frictionref.compare(model, *candidate(mu))
+    assert report["verdict"] == "PASS", report["report"]
+    scales = report["scales"]
+    assert scales["velocity_name"] == "PGV" and scales["period_name"] == "T* = 2 pi PGV/PGA"
+    assert math.isclose(scales["velocity"], a * duration, rel_tol=1e-15)
+    assert math.isclose(scales["period"], 2 * math.pi * duration, rel_tol=1e-15)
+    wrong = frictionref.compare(model, *candidate(2 * mu))
+    assert wrong["verdict"] == "FAIL"
+    assert "stop_times" in wrong["failed_checks"]
+
+
 def test_stiff_with_a_record_converges_to_the_hand_solution(tmp_path):
     # Two-way (the penalty model has no one-way slider); the record as given
     # pushes the block towards -x: the mirror image of the above, at rest
@@ -334,8 +361,8 @@ CASES = [
     (lambda: frictionref.stiff(model(yield_accel=0.1, one_way=True), 1), ["stiff", *TWO_COLUMNS, "--yield-accel", "0.1", "--one-way", "--t-end", "1"]),
     (lambda: frictionref.classify(model(yield_accel=0.1)), ["classify", *TWO_COLUMNS, "--yield-accel", "0.1"]),
     (lambda: frictionref.classify(model(yield_accel=0.1, amplitude=1)), ["classify", *TWO_COLUMNS, "--yield-accel", "0.1", "--amplitude", "1"]),
-    (lambda: frictionref.compare(model(yield_accel=0.1), [0, 1], [0, 0]), ["compare", "--candidate", "none.csv", *TWO_COLUMNS, "--yield-accel", "0.1"]),
-    (lambda: frictionref.compare(model(yield_accel=0.1, amplitude=1), [0, 1], [0, 0]), ["compare", "--candidate", "none.csv", *TWO_COLUMNS, "--yield-accel", "0.1", "--amplitude", "1"]),
+    (lambda: frictionref.compare(M(ground_accel="zeros.txt", record_dt=0.01, yield_accel=0.1), [0, 1], [0, 0]), ["compare", "--candidate", "none.csv", "--ground-accel", "zeros.txt", "--record-dt", "0.01", "--yield-accel", "0.1"]),
+    (lambda: frictionref.compare(M(friction=1, amplitude=0), [0, 1], [0, 0]), ["compare", "--candidate", "none.csv", "--friction", "1", "--amplitude", "0"]),
     (lambda: frictionref.sweep(lambda_from=0, lambda_to=1, points=3, ground_accel=PULSE), ["sweep", "--lambda-from", "0", "--lambda-to", "1", "--points", "3", *TWO_COLUMNS]),
     (lambda: frictionref.sweep(lambda_from=0, lambda_to=1, points=3, ground_accel=PULSE, amplitude=1), ["sweep", "--lambda-from", "0", "--lambda-to", "1", "--points", "3", *TWO_COLUMNS, "--amplitude", "1"]),
     (lambda: frictionref.map("lambda:0:1:3", "mass:1:2:3", ground_accel=PULSE), ["map", "--x", "lambda:0:1:3", "--y", "mass:1:2:3", *TWO_COLUMNS]),
@@ -364,6 +391,7 @@ def records_here(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     write_pulse(tmp_path / PULSE, 0.5, 2.0)
     (tmp_path / "column.txt").write_text("0.5\n0.5\n")
+    (tmp_path / "zeros.txt").write_text("0\n0\n0\n")
 
 
 @pytest.mark.parametrize("call, argv", CASES, ids=[" ".join(a)[:70] for _, a in CASES])
