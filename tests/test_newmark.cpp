@@ -5,7 +5,9 @@
 // record is resampled, the batch's order and determinism, and the refusals.
 #include <gtest/gtest.h>
 
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <utility>
@@ -179,6 +181,65 @@ TEST(Newmark, SlammerConvergesToTheExactAnswer) {
         previous = error;
       }
       EXPECT_LT(previous, 1e-3 * std::fabs(exact.displacement_at_record_end));
+    }
+  }
+}
+
+// One cycle of a_g = A sin(w t) (then still), one-way, normal polarity: the
+// closed form of the harmonic base motion (Conte & Dente 1989 give it for a
+// harmonic excitation; derived here, theory.md 9). With K = KY g <= A the
+// block slides from theta1 = asin(K / A), where a_g reaches K, with
+// v(theta) = [A (cos theta1 - cos theta) - K (theta - theta1)] / w until v = 0
+// at theta2 in (pi - theta1, 2 pi) (v > 0 at pi - theta1, v < 0 at 2 pi), and
+//   D = [A cos theta1 (theta2 - theta1) - A (sin theta2 - sin theta1)
+//        - K (theta2 - theta1)^2 / 2] / w^2.
+// The exact engine solves the record linear between samples: sampled N times
+// per period it converges to D as N^-2 (the interpolant differs from the
+// sine by O(h^2)); so does SLAMMER, from further away.
+TEST(Newmark, OneSineCycleConvergesToTheClosedForm) {
+  const double a = 1, w = 2 * M_PI;  // g = 1 units, period 1 s
+  for (const double k : {0.1, 0.3, 0.6}) {
+    const double theta1 = std::asin(k / a);
+    const auto v = [&](double theta) {
+      return a * (std::cos(theta1) - std::cos(theta)) - k * (theta - theta1);
+    };
+    boost::uintmax_t iterations = 200;
+    const auto bracket = boost::math::tools::toms748_solve(
+        v, M_PI - theta1, 2 * M_PI, boost::math::tools::eps_tolerance<double>(52), iterations);
+    const double theta2 = 0.5 * (bracket.first + bracket.second);
+    const double d = (a * std::cos(theta1) * (theta2 - theta1) -
+                      a * (std::sin(theta2) - std::sin(theta1)) -
+                      k * (theta2 - theta1) * (theta2 - theta1) / 2) /
+                     (w * w);
+    double previous = 0;
+    for (const int n : {100, 200, 400, 800}) {
+      std::vector<double> t, acc;
+      for (int i = 0; i <= n; ++i) {
+        t.push_back(static_cast<double>(i) / n);
+        acc.push_back(a * std::sin(w * t.back()));
+      }
+      acc.back() = 0;  // sin(2 pi) to rounding
+      GroundMotion r = unit_record(t, acc);
+      r.dt = 1.0 / n;  // uniform, as SLAMMER needs
+      const NewmarkResult exact =
+          newmark_analysis(r, k, true, Polarity::normal, NewmarkMethod::exact);
+      const NewmarkResult slammer =
+          newmark_analysis(r, k, true, Polarity::normal, NewmarkMethod::slammer);
+      ASSERT_TRUE(exact.permanent_displacement);
+      EXPECT_EQ(exact.slip_episodes, 1u);
+      const double error = std::fabs(*exact.permanent_displacement - d);
+      std::printf(
+          "measured: sine cycle K/A = %.1f, %d samples per period: closed form D = %.10g, "
+          "exact %.10g (error %.2e), slammer %.10g (error %.2e)\n",
+          k, n, d, *exact.permanent_displacement, error,
+          slammer.displacement_at_record_end,
+          std::fabs(slammer.displacement_at_record_end - d));
+      EXPECT_LT(error, 15.0 / (n * n) * d) << n;  // measured: 4.2 to 13.7 / N^2
+      if (previous > 0) {
+        EXPECT_GT(previous / error, 3.5) << n;  // second order: 4 per halving
+        EXPECT_LT(previous / error, 4.5) << n;
+      }
+      previous = error;
     }
   }
 }
