@@ -13,6 +13,7 @@
 
 #include "atomic_output.hpp"
 #include "command.hpp"
+#include "count_options.hpp"
 #include "csv_format.hpp"
 #include "figure.hpp"
 #include "frictionref/den_hartog.hpp"
@@ -27,7 +28,6 @@ namespace {
 
 constexpr double max_points = 1e7;
 constexpr double max_total_periods = 1e10;  // points * periods: a typo must not run for weeks
-constexpr double max_threads = 256;
 
 struct MapCliOptions {
   ModelOptions model;
@@ -38,15 +38,6 @@ struct MapCliOptions {
   OutputFileOption output;
   std::string plot;
 };
-
-std::uint64_t whole_number(const TypedNumber& typed, double max, const char* max_text) {
-  const double value = parse_number(typed);
-  if (!(value >= 1) || value != std::floor(value))
-    throw bad_input(fmt::format("{} = {}: must be a whole number >= 1", typed.option, typed.text));
-  if (!(value <= max))
-    throw bad_input(fmt::format("{} = {}: must be <= {}", typed.option, typed.text, max_text));
-  return static_cast<std::uint64_t>(value);
-}
 
 std::string spec_text(const MapAxis& axis) {
   return fmt::format("{}:{}:{}:{}", to_string(axis.parameter), axis.from, axis.to, axis.points);
@@ -150,9 +141,7 @@ void run_map(const MapCliOptions& typed, const Invocation& invocation) {
         "--periods = {}: the map could simulate {:.3g} forcing periods, "
         "more than 10^10",
         typed.periods, total_points * static_cast<double>(options.classify.max_periods)));
-  if (!typed.threads.empty())
-    options.threads =
-        static_cast<unsigned>(whole_number({"--threads", typed.threads}, max_threads, "256"));
+  options.threads = thread_count(typed.threads);
   std::optional<Shard> shard;
   if (!typed.shard.empty()) options.shard = *(shard = parse_shard(typed.shard, typed.plot));
   if (!typed.plot.empty()) require_figure_path(typed.plot, "--plot");
@@ -211,9 +200,7 @@ Command add_map_command(CLI::App& app) {
                               "forcing periods simulated per point at most; 2 to 10^6"))
       ->type_name("P")
       ->capture_default_str();
-  numeric(command->add_option("--threads", options->threads,
-                              "worker threads; 1 to 256 (default: all cores)"))
-      ->type_name("N");
+  add_threads_option(*command, options->threads);
   add_shard_option(*command, options->shard, "points");
   options->output.add_to(*command);
   command

@@ -17,6 +17,7 @@
 
 #include "atomic_output.hpp"
 #include "command.hpp"
+#include "count_options.hpp"
 #include "csv_format.hpp"
 #include "figure.hpp"
 #include "frictionref/exact_engine.hpp"
@@ -32,7 +33,6 @@ namespace {
 constexpr std::size_t max_records = 10'000;
 constexpr std::size_t max_yield_values = 10'000;
 constexpr double max_runs = 1e7;
-constexpr double max_threads = 256;
 
 struct NewmarkCliOptions {
   std::vector<std::string> records;
@@ -44,7 +44,7 @@ struct NewmarkCliOptions {
   OutputFileOption output;
   std::string plot;
   CLI::Option *record_dt_option = nullptr, *accel_units_option = nullptr, *scale_option = nullptr,
-              *target_pga_option = nullptr, *threads_option = nullptr;
+              *target_pga_option = nullptr;
 };
 
 // The length unit that standard gravity G names: metres for 9.80665, and so on.
@@ -99,15 +99,6 @@ std::vector<double> yield_values(const NewmarkCliOptions& typed, NewmarkMethod m
     values.push_back(ky);
   }
   return values;
-}
-
-unsigned thread_count(const NewmarkCliOptions& typed) {
-  if (typed.threads_option->count() == 0) return 0;
-  const double value = parse_number({"--threads", typed.threads});
-  if (!(value >= 1 && value <= max_threads) || value != std::floor(value))
-    throw bad_input(
-        fmt::format("--threads = {}: must be a whole number from 1 to 256", typed.threads));
-  return static_cast<unsigned>(value);
 }
 
 double pga_in_g(const GroundMotion& record) { return record.pga() / record.gravity; }
@@ -313,7 +304,7 @@ void run_newmark(const NewmarkCliOptions& typed, const Invocation& invocation) {
   if (typed.inverse) options.polarities = {Polarity::inverse};
   if (typed.both_polarities) options.polarities = {Polarity::normal, Polarity::inverse};
   options.yield_accels_g = yield_values(typed, options.method);
-  options.threads = thread_count(typed);
+  options.threads = thread_count(typed.threads);
   const double runs = static_cast<double>(typed.records.size()) *
                       static_cast<double>(options.yield_accels_g.size()) *
                       static_cast<double>(options.polarities.size());
@@ -426,10 +417,7 @@ Command add_newmark_command(CLI::App& app) {
                    "1.1's trapezoidal rigid block, a numerical peer)")
       ->type_name("M")
       ->capture_default_str();
-  options->threads_option =
-      numeric(command->add_option("--threads", options->threads,
-                                  "worker threads; 1 to 256 (default: all cores)"))
-          ->type_name("N");
+  add_threads_option(*command, options->threads);
   options->output.add_to(*command);
   command->add_flag("--json", options->json,
                     "write a JSON array of objects instead of the CSV table");

@@ -22,6 +22,7 @@
 
 #include "atomic_output.hpp"
 #include "command.hpp"
+#include "count_options.hpp"
 #include "csv_format.hpp"
 #include "figure.hpp"
 #include "frictionref/den_hartog.hpp"
@@ -36,11 +37,10 @@
 namespace frictionref::cli {
 namespace {
 
-constexpr double max_lambda = 1e6;  // every lambda >= 1 stops; larger adds nothing
-constexpr double max_speed = 1e6;   // |v0| [B/(m w)]
-constexpr double max_static_ratio = 1e6;  // Rs / R
-constexpr double max_points = 1e7;  // about 40 bytes of results per point
-constexpr double max_threads = 256;
+constexpr double max_lambda = 1e6;           // every lambda >= 1 stops; larger adds nothing
+constexpr double max_speed = 1e6;            // |v0| [B/(m w)]
+constexpr double max_static_ratio = 1e6;     // Rs / R
+constexpr double max_points = 1e7;           // about 40 bytes of results per point
 constexpr double max_total_periods = 1e9;    // points * periods: a typo must not run for days
 constexpr std::size_t max_plotted = 20'000;  // evenly spaced rows, plus every change
 
@@ -73,8 +73,7 @@ void refuse_fixed_options(const SweepCliOptions& typed) {
     const std::string& name = option.name;
     // "--lambda = 0.3", or "--lambda" when given without a value.
     const std::string given = option.value.empty() ? name : name + " = " + option.value;
-    if (name == "--t0")
-      throw bad_input(given + ": not a sweep option; every run starts at t = 0");
+    if (name == "--t0") throw bad_input(given + ": not a sweep option; every run starts at t = 0");
     if (name == "--friction" || name == "--lambda")
       throw bad_input(given +
                       ": not a sweep option; the sweep sets R = lambda B for lambda from "
@@ -104,16 +103,6 @@ double finite_lambda(const TypedNumber& typed) {
 long double precise(const std::string& text, double value) {
   const long double wide = std::strtold(text.c_str(), nullptr);
   return static_cast<double>(wide) == value ? wide : static_cast<long double>(value);
-}
-
-// A whole number in [1, max]; "1e5" is fine.
-std::uint64_t whole_number(const TypedNumber& typed, double max, const char* max_text) {
-  const double value = parse_number(typed);
-  if (!(value >= 1) || value != std::floor(value))
-    throw bad_input(fmt::format("{} = {}: must be a whole number >= 1", typed.option, typed.text));
-  if (!(value <= max))
-    throw bad_input(fmt::format("{} = {}: must be <= {}", typed.option, typed.text, max_text));
-  return static_cast<std::uint64_t>(value);
 }
 
 // The model line: the base model with the friction as a function of each
@@ -173,8 +162,8 @@ void write_table(std::FILE* out, const std::vector<double>& grid,
   const std::vector<std::string> lines = shard_lines(
       fmt::format("sweep: lambda_from={} lambda_to={} points={} periods={} measured_from={} "
                   "measured_to={} threshold={}",
-                  grid.front(), grid.back(), grid.size(), options.periods, window.begin,
-                  window.end, threshold),
+                  grid.front(), grid.back(), grid.size(), options.periods, window.begin, window.end,
+                  threshold),
       shard, grid.size());
   for (const std::string& line : lines) fmt::print(out, "# {}\n", line);
   // Of this file's rows (a shard's: merge recomputes it for the whole sweep).
@@ -287,9 +276,9 @@ Figure sweep_figure(const std::vector<SweepPoint>& points, const SweepOptions& o
     const std::size_t rs_at = title.find(rs);
     if (rs_at != std::string::npos)
       title.replace(rs_at, rs.size(), fmt::format(" Rs={} R", options.static_ratio));
-    figure.title = fmt::format("sweep: {}, measured over the last of {} periods{}{}", title,
-                               options.periods, line_name.empty() ? "" : "; ",
-                               line_name + (marked ? " (dashed)" : ""));
+    figure.title =
+        fmt::format("sweep: {}, measured over the last of {} periods{}{}", title, options.periods,
+                    line_name.empty() ? "" : "; ", line_name + (marked ? " (dashed)" : ""));
   }
   figure.panels = {stuck_panel, stops_panel};
   return figure;
@@ -320,9 +309,7 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
         fmt::format("--periods = {}: with --points = {} the sweep would simulate {:.3g} "
                     "forcing periods, more than 10^9",
                     typed.periods, typed.points, total));
-  if (!typed.threads.empty())
-    options.threads =
-        static_cast<unsigned>(whole_number({"--threads", typed.threads}, max_threads, "256"));
+  options.threads = thread_count(typed.threads);
   options.v0 = model.v0;
   options.base = model;
   options.base.v0 = 0;
@@ -344,8 +331,8 @@ void run_sweep(const SweepCliOptions& typed, const Invocation& invocation) {
   // |v0| in the velocity unit B/(m w) of the forcing (the seed's 1e6).
   const double speed_unit = model.amplitude / (model.mass * model.omega);
   if (!(std::fabs(options.v0) <= max_speed * speed_unit))
-    throw bad_input(fmt::format("--v0 = {}: must satisfy |v0| <= 1e6 (in B/(m w))",
-                                inputs.at("v0").text));
+    throw bad_input(
+        fmt::format("--v0 = {}: must satisfy |v0| <= 1e6 (in B/(m w))", inputs.at("v0").text));
   std::optional<Shard> shard;
   if (!typed.shard.empty()) shard = parse_shard(typed.shard, typed.plot);
   if (!typed.plot.empty()) require_figure_path(typed.plot, "--plot");
@@ -407,9 +394,7 @@ Command add_sweep_command(CLI::App& app) {
                               "1 to 10^6, points x periods <= 10^9"))
       ->type_name("P")
       ->capture_default_str();
-  numeric(command->add_option("--threads", options->threads,
-                              "worker threads; 1 to 256 (default: all cores)"))
-      ->type_name("N");
+  add_threads_option(*command, options->threads);
   add_shard_option(*command, options->shard, "lambdas");
   options->output.add_to(*command);
   command
@@ -424,12 +409,12 @@ Command add_sweep_command(CLI::App& app) {
   selection.static_friction = false;
   selection.t0 = false;
   options->model.add_to(*command, /*friction_required=*/false, selection);
-  for (const char* name : {"--friction", "--lambda", "--static-friction", "--static-lambda", "--t0"})
+  for (const char* name :
+       {"--friction", "--lambda", "--static-friction", "--static-lambda", "--t0"})
     options->refused.push_back({name, "", nullptr});
   // Bound after the vector is complete: the strings stay where they are.
   for (SweepCliOptions::Refused& refused : options->refused)
-    refused.option =
-        command->add_option(refused.name, refused.value)->group("")->expected(0, 1);
+    refused.option = command->add_option(refused.name, refused.value)->group("")->expected(0, 1);
   command->footer(
       "For each lambda, runs the exact engine on the model with R = lambda B and Rs = S R\n"
       "(S = --static-ratio), from x0, v0 at t = 0 to P T + pi/(2 w), T the forcing period\n"
@@ -445,7 +430,8 @@ Command add_sweep_command(CLI::App& app) {
       "  a spring without damper, offset or extra harmonic (any S): 'continuous' where Den\n"
       "    Hartog's non-stop solution exists and is stable (as classify), else n/a;\n"
       "  any other model: n/a.\n"
-      "The model options are those of every command except --friction/--lambda, --static-friction/\n"
+      "The model options are those of every command except --friction/--lambda, "
+      "--static-friction/\n"
       "--static-lambda (the sweep sets R and Rs) and --t0 (runs start at t = 0); B must be > 0.\n"
       "Output: '# ...' metadata lines (the whole model), then lambda,regime_simulated,\n"
       "regime_threshold,stuck_fraction,slide_per_period [length],stops_per_period,\n"

@@ -18,6 +18,7 @@
 #include "errors.hpp"
 #include "frictionref/model_input.hpp"
 #include "module.hpp"
+#include "studies.hpp"
 
 namespace frictionref::python {
 namespace {
@@ -88,14 +89,6 @@ std::vector<double> yield_values(const std::vector<Number>& numbers, NewmarkMeth
   return values;
 }
 
-unsigned thread_count(py::handle object) {
-  if (object.is_none()) return 0;
-  const Number n = whole(object, "threads");
-  if (!(n.value >= 1 && n.value <= 256) || n.value != std::floor(n.value))
-    value_error("--threads = " + n.text + ": must be a whole number from 1 to 256");
-  return static_cast<unsigned>(n.value);
-}
-
 std::string text_keyword(py::handle object, const char* keyword, const char* choices) {
   if (!PyUnicode_Check(object.ptr()))
     type_error(std::string(keyword) + " must be a str (" + choices + "), not " + type_name(object));
@@ -159,7 +152,7 @@ py::dict newmark(py::handle records_object, py::handle yield_object, py::handle 
   if (!chosen) value_error("--method = " + method + ": must be exact or slammer");
   options.method = *chosen;
   options.yield_accels_g = yield_values(yield_typed, options.method);
-  options.threads = thread_count(threads_object);
+  options.threads = threads(threads_object);
   const double runs = static_cast<double>(paths.size()) *
                       static_cast<double>(options.yield_accels_g.size()) *
                       static_cast<double>(options.polarities.size());
