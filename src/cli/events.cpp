@@ -3,12 +3,12 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <boost/math/constants/constants.hpp>
 #include <memory>
 
 #include "atomic_output.hpp"
 #include "command.hpp"
 #include "csv_format.hpp"
+#include "frictionref/phase_estimate.hpp"
 #include "model_options.hpp"
 
 namespace frictionref::cli {
@@ -21,12 +21,6 @@ struct EventsOptions {
   bool summary = false;
   bool force = false;
 };
-
-// The estimate: at most 4 phases per forcing period (2 slips and 2
-// sticks in the dead-band regime), plus the start-up transient.
-double estimated_phases(const Model& model, double t_end) {
-  return (t_end - model.t0) * model.omega / boost::math::double_constants::two_pi * 4 + 4;
-}
 
 // One line of key=value: counts by phase kind and the state at the horizon.
 std::string summary_line(const Summary& summary) {
@@ -47,12 +41,12 @@ void run_events(const EventsOptions& options, const Invocation& invocation) {
   const double t_end = parse_number(inputs.at("t_end"));
   ExactEngine engine = naming_options(inputs, [&] { return ExactEngine(model, t_end); });
 
-  const double phases = estimated_phases(model, t_end);
-  if (!options.force && !(phases <= static_cast<double>(max_rows_without_force))) {
-    throw bad_input(fmt::format(
-        "--t-end = {}: about {:.3g} phases (4 per forcing period), more than 10^9; pass --force "
-        "to run anyway",
-        options.t_end, phases));
+  const PhaseEstimate estimate = estimate_phases(model, t_end);
+  if (!options.force && !(estimate.phases <= static_cast<double>(max_rows_without_force))) {
+    throw bad_input(
+        fmt::format("--t-end = {}: about {:.3g} phases ({}), more than 10^9; pass --force "
+                    "to run anyway",
+                    options.t_end, estimate.phases, estimate.basis));
   }
 
   AtomicOutput out(options.output.path(), "-o");
@@ -93,7 +87,8 @@ Command add_events_command(CLI::App& app) {
                     "print one key=value line (counts per phase kind, stops, final state) "
                     "instead of the table");
   command->add_flag("--force", options->force,
-                    "allow more than 10^9 estimated phases (4 per forcing period)");
+                    "allow more than 10^9 estimated phases (4 per period of the forcing or the "
+                    "spring, 4 per record sample)");
   command->footer(
       "Computes every phase of the exact motion: its kind (stick, slip+, slip-) and t, x, v at\n"
       "both ends. Boundaries come from closed forms and bracketed roots, no time step; the\n"

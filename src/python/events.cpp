@@ -1,13 +1,13 @@
 // frictionref.events() and frictionref.summary(): the CLI's `events`.
 #include "events.hpp"
 
-#include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
 #include "arguments.hpp"
 #include "errors.hpp"
+#include "frictionref/phase_estimate.hpp"
 #include "model.hpp"
 #include "module.hpp"
 #include "records.hpp"
@@ -15,19 +15,15 @@
 namespace frictionref::python {
 namespace {
 
-// The CLI's guard: 4 phases per forcing period plus the transient, at most
-// 10^9 without force.
-double estimated_phases(const Model& model, double t_end) {
-  return (t_end - model.t0) * model.omega / boost::math::double_constants::two_pi * 4 + 4;
-}
-
+// The CLI's guard (phase_estimate.hpp): at most 10^9 estimated phases
+// without force.
 void require_phase_estimate(const Model& model, const Number& t_end, bool force) {
-  const double phases = estimated_phases(model, t_end.value);
-  if (!force && !(phases <= 1e9)) {
+  const PhaseEstimate estimate = estimate_phases(model, t_end.value);
+  if (!force && !(estimate.phases <= 1e9)) {
     char text[64];
-    std::snprintf(text, sizeof text, "%.3g", phases);
-    value_error("--t-end = " + t_end.text + ": about " + text +
-                " phases (4 per forcing period), more than 10^9; pass --force to run anyway");
+    std::snprintf(text, sizeof text, "%.3g", estimate.phases);
+    value_error("--t-end = " + t_end.text + ": about " + text + " phases (" + estimate.basis +
+                "), more than 10^9; pass --force to run anyway");
   }
 }
 
@@ -59,7 +55,7 @@ py::array events(const PyModel& model, py::handle t_end, py::handle max_phases, 
   });
   require_phase_estimate(model.model, request.t_end, forced);
   if (request.options.max_phases == SolveOptions{}.max_phases)
-    require_memory(estimated_phases(model.model, request.t_end.value), sizeof(PhaseRow),
+    require_memory(estimate_phases(model.model, request.t_end.value).phases, sizeof(PhaseRow),
                    "--t-end = " + request.t_end.text,
                    "stream them with frictionref.phases(), or pass max_phases");
   const std::uint64_t memory_cap = memory_rows(sizeof(PhaseRow));
@@ -74,8 +70,8 @@ py::array events(const PyModel& model, py::handle t_end, py::handle max_phases, 
       rows.push_back(phase_row(phase));
       interrupt();
     }
-    more = rows.size() == memory_cap && memory_cap < request.options.max_phases &&
-           engine.next(phase);
+    more =
+        rows.size() == memory_cap && memory_cap < request.options.max_phases && engine.next(phase);
   }
   if (more)
     value_error("--t-end = " + request.t_end.text + ": more than " + std::to_string(memory_cap) +
@@ -88,7 +84,8 @@ py::array events(const PyModel& model, py::handle t_end, py::handle max_phases, 
 py::dict summary(const PyModel& model, py::handle t_end, py::handle force) {
   const EngineRequest request = engine_request(model, t_end, py::none());
   const bool forced = flag(force, "force");
-  ExactEngine engine = naming(request.inputs, [&] { return ExactEngine(model.model, request.t_end.value); });
+  ExactEngine engine =
+      naming(request.inputs, [&] { return ExactEngine(model.model, request.t_end.value); });
   require_phase_estimate(model.model, request.t_end, forced);
   {
     py::gil_scoped_release release;
@@ -103,8 +100,8 @@ py::dict summary(const PyModel& model, py::handle t_end, py::handle force) {
 }  // namespace
 
 PhaseRow phase_row(const Phase& phase) {
-  PhaseRow row{phase.t_begin, phase.t_end, phase.x_begin, phase.x_end,
-               phase.v_begin, phase.v_end, {},            0};
+  PhaseRow row{
+      phase.t_begin, phase.t_end, phase.x_begin, phase.x_end, phase.v_begin, phase.v_end, {}, 0};
   put_phase(row.phase, phase.kind);
   return row;
 }

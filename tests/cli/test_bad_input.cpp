@@ -60,6 +60,8 @@ const std::vector<BadInput> bad_inputs = {
     {events({"--lambda", "0.3"}), "--t-end", ""},
     {events({"--lambda", "0.3", "--t-end", "1e10"}), "--t-end = 1e10", "--force"},
     {events({"--lambda", "0.3", "--t-end", "1e10", "--summary"}), "--t-end = 1e10", "--force"},
+    {events({"--lambda", "0.3", "--stiffness", "1e17", "--t-end", "30"}), "--t-end = 30",
+     "4 per natural period"},
     {events({"--lambda", "0.3", "--omega", "100", "--t-end", "2e7"}), "--t-end", "--force"},
     // Forcing phases a double cannot resolve are refused even with --force.
     {events({"--lambda", "0.3", "--t-end", "2e10", "--force"}), "--t-end = 2e10", "1e10"},

@@ -34,6 +34,7 @@ CASES = [
     (lambda: frictionref.events(M(lambda_=0.7), 0), ["events", "--lambda", "0.7", "--t-end", "0"]),
     (lambda: frictionref.events(M(lambda_=0.7, t0=5), 1), ["events", "--lambda", "0.7", "--t0", "5", "--t-end", "1"]),
     (lambda: frictionref.events(M(lambda_=0.3), 1e10), ["events", "--lambda", "0.3", "--t-end", "1e+10"]),
+    (lambda: frictionref.events(M(lambda_=0.3, stiffness=1e17), 30), ["events", "--lambda", "0.3", "--stiffness", "1e+17", "--t-end", "30"]),
     (lambda: frictionref.summary(M(lambda_=0.3), float("nan")), ["events", "--lambda", "0.3", "--t-end", "nan", "--summary"]),
     (lambda: frictionref.curve(M(lambda_=0.7), t_end=1, dt=0), ["curve", "--lambda", "0.7", "--t-end", "1", "--dt", "0"]),
     (lambda: frictionref.curve(M(lambda_=0.7), t_end=1e9, dt=0.01), ["curve", "--lambda", "0.7", "--t-end", "1e+09", "--dt", "0.01"]),
