@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "frictionref/detail/number_text.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/sha256.hpp"
 #include "frictionref/time_history.hpp"
@@ -265,6 +266,17 @@ std::optional<AccelUnits> accel_units_from_string(std::string_view text) {
                            AccelUnits::ft_per_s2, AccelUnits::in_per_s2})
     if (to_string(units) == text) return units;
   return std::nullopt;
+}
+
+std::string length_unit_of_gravity(double gravity) {
+  for (const AccelUnits units : {AccelUnits::m_per_s2, AccelUnits::cm_per_s2, AccelUnits::ft_per_s2,
+                                 AccelUnits::in_per_s2}) {
+    if (gravity == standard_gravity_in(units)) {
+      const std::string_view text = to_string(units);
+      return std::string(text.substr(0, text.find('/')));
+    }
+  }
+  return "the length unit in which g = " + detail::shortest_text(gravity);
 }
 
 double standard_gravity_in(AccelUnits units) {

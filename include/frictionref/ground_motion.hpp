@@ -35,6 +35,11 @@ std::optional<AccelUnits> accel_units_from_string(std::string_view text);
 // 9.80665 / 0.3048, 9.80665 / 0.0254.
 double standard_gravity_in(AccelUnits units);
 
+// The length unit that standard gravity G (in length per s^2) names, as the
+// outputs say it: "m" for 9.80665, "cm" for 980.665, "ft", "in"; for any
+// other G, "the length unit in which g = G".
+std::string length_unit_of_gravity(double gravity);
+
 struct GroundMotionReadOptions {
   enum class Format { automatic, peer_at2, table };
   // automatic: PEER .AT2 when the file name ends in .at2 (any case) or its

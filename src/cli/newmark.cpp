@@ -47,18 +47,6 @@ struct NewmarkCliOptions {
               *target_pga_option = nullptr;
 };
 
-// The length unit that standard gravity G names: metres for 9.80665, and so on.
-std::string length_unit(double gravity) {
-  for (const AccelUnits units : {AccelUnits::m_per_s2, AccelUnits::cm_per_s2, AccelUnits::ft_per_s2,
-                                 AccelUnits::in_per_s2}) {
-    if (gravity == standard_gravity_in(units)) {
-      const std::string text(to_string(units));
-      return text.substr(0, text.find('/'));
-    }
-  }
-  return fmt::format("the length unit in which g = {}", number(gravity));
-}
-
 // The records as the options say to read them. Errors name the option, or
 // --record with the file (and line).
 std::vector<std::shared_ptr<const GroundMotion>> read_records(const NewmarkCliOptions& typed) {
@@ -118,8 +106,8 @@ void write_csv(std::FILE* out, const std::vector<NewmarkResult>& results,
              "# newmark: method={} sliding={} polarities={} gravity={} length_unit={} "
              "records={} yield_values={}\n",
              to_string(options.method), options.one_way ? "one-way" : "two-way",
-             fmt::join(polarities, ","), number(gravity), length_unit(gravity), records.size(),
-             options.yield_accels_g.size());
+             fmt::join(polarities, ","), number(gravity), length_unit_of_gravity(gravity),
+             records.size(), options.yield_accels_g.size());
   fmt::print(out,
              "# newmark: displacement positive downslope (SLAMMER, Jibson 1993): the block "
              "slides when the ground acceleration (normal) or its negative (inverse) exceeds "
@@ -167,7 +155,7 @@ void write_json(std::FILE* out, const std::vector<NewmarkResult>& results,
         r.permanent_displacement ? nlohmann::json(*r.permanent_displacement) : nlohmann::json();
     item["slip_episodes"] = r.slip_episodes;
     item["max_relative_velocity"] = r.max_relative_velocity;
-    item["length_unit"] = length_unit(gravity);
+    item["length_unit"] = length_unit_of_gravity(gravity);
     array.push_back(std::move(item));
   }
   fmt::print(out, "{}\n", array.dump(2));
@@ -208,7 +196,8 @@ Figure curve_figure(const std::vector<NewmarkResult>& results,
                   options.one_way ? "one-way" : "two-way", to_string(options.method),
                   left_out > 0 ? fmt::format("; {} zero or unset values not drawn", left_out)
                                : std::string()),
-      "KY / PGA [1]", fmt::format("permanent displacement [{}]", length_unit(gravity)), series);
+      "KY / PGA [1]", fmt::format("permanent displacement [{}]", length_unit_of_gravity(gravity)),
+      series);
   panel.log_y = true;
   Figure figure;
   figure.title = fmt::format("Newmark sliding block: {} record(s), {} yield acceleration(s)",
@@ -222,7 +211,7 @@ Figure curve_figure(const std::vector<NewmarkResult>& results,
 // (SLAMMER's displacement too with --method slammer), per polarity.
 Figure history_figure(const std::shared_ptr<const GroundMotion>& record, double ky,
                       const NewmarkOptions& options, double gravity) {
-  const std::string unit = length_unit(gravity);
+  const std::string unit = length_unit_of_gravity(gravity);
   std::vector<Series> ground, velocity, displacement;
   double t_plot_end = record->t.back();
   for (const Polarity polarity : options.polarities) {

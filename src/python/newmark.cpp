@@ -95,19 +95,6 @@ std::string text_keyword(py::handle object, const char* keyword, const char* cho
   return object.cast<std::string>();
 }
 
-// The length unit that standard gravity G names, as the CLI's JSON says it:
-// "m" for 9.80665, "cm" for 980.665, and so on.
-std::string length_unit(double gravity) {
-  for (const AccelUnits units : {AccelUnits::m_per_s2, AccelUnits::cm_per_s2, AccelUnits::ft_per_s2,
-                                 AccelUnits::in_per_s2}) {
-    if (gravity == standard_gravity_in(units)) {
-      const std::string text(to_string(units));
-      return text.substr(0, text.find('/'));
-    }
-  }
-  return "the length unit in which g = " + number_text(gravity);
-}
-
 // A numpy array of str from `texts` (the dtype as long as the longest).
 py::array text_column(const py::list& texts) {
   return py::module_::import("numpy").attr("array")(texts, "str");
@@ -220,7 +207,7 @@ py::dict newmark(py::handle records_object, py::handle yield_object, py::handle 
     max_velocity.mutable_at(k) = r.max_relative_velocity;
   }
   py::list units;
-  for (std::size_t i = 0; i < results.size(); ++i) units.append(length_unit(gravity));
+  for (std::size_t i = 0; i < results.size(); ++i) units.append(length_unit_of_gravity(gravity));
   py::dict out;
   out["record"] = text_column(record);
   out["record_sha256"] = text_column(sha256);
