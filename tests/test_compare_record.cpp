@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "compare_helpers.hpp"
 #include "expect_invalid.hpp"
 #include "frictionref/comparison.hpp"
 #include "frictionref/ground_motion.hpp"
@@ -29,7 +30,9 @@
 namespace frictionref {
 namespace {
 
+using testing::exact_history;
 using testing::expect_invalid;
+using testing::find_check;
 
 const std::string kSource = FRICTIONREF_SOURCE_DIR;
 
@@ -61,25 +64,6 @@ std::shared_ptr<const GroundMotion> sampled(F f, double t_end, double h) {
   r->npts = r->t.size();
   r->gravity = 1;
   return r;
-}
-
-std::vector<double> grid(double t_end, double dt) {
-  std::vector<double> t;
-  const auto n = static_cast<std::int64_t>(std::llround(t_end / dt));
-  for (std::int64_t i = 0; i <= n; ++i) t.push_back(static_cast<double>(i) * dt);
-  return t;
-}
-
-TimeHistory exact_history(const Model& model, double t_end, double dt) {
-  TimeHistory history;
-  history.t = grid(t_end, dt);
-  history.x.emplace();
-  for (const State& s : sample_at(model, history.t)) {
-    history.v.push_back(s.v);
-    history.x->push_back(s.x);
-  }
-  history.source = "exact";
-  return history;
 }
 
 // An independent stiff-spring code (as in test_comparison.cpp) with the
@@ -122,12 +106,6 @@ TimeHistory stiff_spring_candidate(const Model& m, double t_end, double k_f, dou
   }
   history.source = "stiff spring on the record";
   return history;
-}
-
-const Check* find_check(const ComparisonReport& report, CheckKind kind) {
-  for (const Check& check : report.checks)
-    if (check.kind == kind) return &check;
-  return nullptr;
 }
 
 // ---------------------------------------------------------------------------

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "compare_helpers.hpp"
 #include "expect_invalid.hpp"
 #include "frictionref/comparison.hpp"
 #include "frictionref/exact_engine.hpp"
@@ -27,30 +28,11 @@
 namespace frictionref {
 namespace {
 
+using testing::exact_history;
+using testing::find_check;
 using testing::seed_model;
 
 using testing::expect_invalid;
-
-// Sample times t0 + i dt up to t_end (i counted, never accumulated).
-std::vector<double> grid(double t0, double t_end, double dt) {
-  std::vector<double> t;
-  const auto n = static_cast<std::int64_t>(std::llround((t_end - t0) / dt));
-  for (std::int64_t i = 0; i <= n; ++i) t.push_back(t0 + static_cast<double>(i) * dt);
-  return t;
-}
-
-// The exact motion itself, sampled with step dt.
-TimeHistory exact_history(const Model& model, double t_end, double dt) {
-  TimeHistory history;
-  history.t = grid(model.t0, t_end, dt);
-  history.x.emplace();
-  for (const State& s : sample_at(model, history.t)) {
-    history.v.push_back(s.v);
-    history.x->push_back(s.x);
-  }
-  history.source = "exact";
-  return history;
-}
 
 // An independent stiff-spring code (THEORY.md, "the stiff-spring model"):
 // friction -K_f (x - z) through a spring in series with a Coulomb slider z,
@@ -121,12 +103,6 @@ std::vector<Phase> stick_phases(const Model& model, double t_end) {
   for (const Phase& phase : solve(model, t_end).phases)
     if (phase.kind == PhaseKind::stick) sticks.push_back(phase);
   return sticks;
-}
-
-const Check* find_check(const ComparisonReport& report, CheckKind kind) {
-  for (const Check& check : report.checks)
-    if (check.kind == kind) return &check;
-  return nullptr;
 }
 
 // Passed, failed, or absent, with the report for the failure message.
