@@ -40,10 +40,10 @@ struct Jet {
 
 template <class Work>
 struct ZeroBracket {
-  bool found = false;  // false: f > 0 on the whole interval
-  Work lo = 0;         // f(lo) > 0 (or lo = hi: a zero within the resolution of lo)
-  Work hi = 0;         // f(hi) <= 0, f decreasing on [lo, hi]; or, after a step at the
-                       // resolution, f(hi) within its rounding error of 0
+  bool found = false;      // false: f > 0 on the whole interval
+  Work lo = 0;             // f(lo) > 0 (or lo = hi: a zero within the resolution of lo)
+  Work hi = 0;             // f(hi) <= 0, f decreasing on [lo, hi]; or, after a step at the
+                           // resolution, f(hi) within its rounding error of 0
   Jet<Work> at_lo, at_hi;  // the jets there, for the root solver's first guess
 };
 
@@ -65,14 +65,21 @@ class FirstZeroSearch {
   // Searches (a, end] from a with f(a) >= 0 (jet `at_a`); zeros within
   // `blind` of a are not looked for (a slip that starts at rest has f(a) = 0:
   // its first `blind` is below the resolution). `resolution` is the time
-  // resolution; `max_steps` bounds the work.
+  // resolution. Two caps bound the work: `max_steps`, which the caller sizes
+  // to the oscillations f can make on [a, end] (a slip of a stiff spring
+  // rings through 10^4 natural periods at ~10 steps each), and a fixed cap on
+  // steps at the resolution, which make no provable progress (the stall).
+  static constexpr std::int64_t kDefaultMaxSteps = 100000;
+  static constexpr std::int64_t kMaxStepsAtResolution = 100000;
+
   template <class Probe>
   static ZeroBracket<Work> run(Probe& probe, const Work& a, const Jet<Work>& at_a, const Work& end,
-                               const Work& blind, const Work& resolution, int max_steps = 100000) {
+                               const Work& blind, const Work& resolution,
+                               std::int64_t max_steps = kDefaultMaxSteps) {
     using std::fabs;
     Work cur = a;
     Jet<Work> j = at_a;
-    int steps = 0;
+    std::int64_t steps = 0, steps_at_resolution = 0;
     if (blind > 0) {  // no zero is looked for before a + blind: start there
       Work b = a + blind < end ? Work(a + blind) : end;
       Jet<Work> jb = probe.jet(b);
@@ -157,6 +164,7 @@ class FirstZeroSearch {
           h = resolution;
           continue;
         }
+        if (++steps_at_resolution > kMaxStepsAtResolution) throw SearchStalled{};
         // Nothing provable at the resolution: a sign test, where a value
         // within twice its rounding error of zero counts as zero (f hovering
         // at the level of its noise would otherwise be crossed a resolution

@@ -118,6 +118,16 @@ class LinearOscillatorFamily {
     return {evaluate, bound, &summary_->sign_tests};
   }
 
+  // The event search's step cap for (from, to]: a fixed allowance plus 256
+  // steps per radian of the fastest oscillation (about 2 are used: ~10 per
+  // natural period of a stiff spring's ringing), so that a long slip of a
+  // stiff spring is searched to its end and a stall is still caught.
+  std::int64_t step_budget(const Work& from, const Work& to) const {
+    const double radians = static_cast<double>((to - from) * o_.fastest_rate());
+    const double budget = static_cast<double>(Search::kDefaultMaxSteps) + 256 * radians;
+    return budget < 1e18 ? static_cast<std::int64_t>(budget) : std::int64_t(1e18);
+  }
+
   Oscillator<Work> o_;
   Work tau_end_;
   BasicSummary<Real>* summary_;
@@ -161,6 +171,13 @@ auto LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y,
   if (!(rs > tolerance) && !sign_resolved && fabs(p.d1) > p.e_d1) side = p.d1 > 0 ? 1 : -1;
   if (side == 0) return {0, false};
   if (Work(side) * p.d1 > p.e_d1) return {side, excess <= 0};
+  // Inward, but so fast that n crosses the whole band and leaves it on the
+  // other side within the resolution: the stick is shorter than the engine
+  // resolves, merged into a slip the other way at once (a stick of zero
+  // length between two slips the same way showed as a touch cut in two: a
+  // subnormal v0 against a huge harmonic, found by the low-end sweep).
+  const Work fall = fabs(p.d1) * res - fabs(p.d2) * res * res / 2 - p.e_d1 * res;
+  if (Work(side) * p.d1 < -p.e_d1 && fall > fabs(p.n) + rs + p.e_n) return {-side, true};
   // Inward, or N within rounding of the band's edge and not moving beyond
   // rounding either: nothing resolvable drives the mass, it stays
   // (|N| <= Rs within rounding). Sliding in the latter case followed the
@@ -217,7 +234,8 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
     return net.third_bound(at, h);
   });
   const Work res = Traits::time_resolution(tau);
-  const ZeroBracket<Work> bracket = Search::run(search, tau, search.jet(tau), tau_end_, res, res);
+  const ZeroBracket<Work> bracket =
+      Search::run(search, tau, search.jet(tau), tau_end_, res, res, step_budget(tau, tau_end_));
   if (!bracket.found) return result;
   struct Cached {
     Work tau = std::numeric_limits<Work>::quiet_NaN();
@@ -344,7 +362,9 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     if (blind > 0) at_from.f = 0;             // exactly: the slip starts (or goes on) from v = 0
     const Work res = Traits::time_resolution(from);
     ZeroBracket<Work> bracket;
-    if (from < tau_end_) bracket = Search::run(search, from, at_from, tau_end_, blind, res);
+    if (from < tau_end_)
+      bracket =
+          Search::run(search, from, at_from, tau_end_, blind, res, step_budget(from, tau_end_));
     if (!bracket.found) {
       const auto q = law.point(tau_end_, false);
       result.stops = false;

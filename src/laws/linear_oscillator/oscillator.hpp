@@ -40,8 +40,10 @@ class Oscillator {
       const Complex<Work> p{rho2_ - term.q * term.q, 2 * sigma_ * term.q};
       const bool resonant = p.re == 0 && p.im == 0;
       steady_.push_back(resonant ? Complex<Work>{} : Complex<Work>{1, 0} / p);
-      if (resonant) steady_bound4_ = std::numeric_limits<Work>::infinity();
-      else steady_bound4_ += fabs(term.a) * steady_.back().abs() * Work(pow(term.q, 4));
+      if (resonant)
+        steady_bound4_ = std::numeric_limits<Work>::infinity();
+      else
+        steady_bound4_ += fabs(term.a) * steady_.back().abs() * Work(pow(term.q, 4));
     }
   }
 
@@ -59,6 +61,19 @@ class Oscillator {
   // the motion itself is computed without H (forced_response.hpp).
   const std::vector<Complex<Work>>& steady() const { return steady_; }
   const Work& steady_bound4() const { return steady_bound4_; }
+  // The fastest rate at which the motion can turn, per radian of tau: the
+  // natural frequency rho, the damping's 2 sigma, the forcing frequencies
+  // (1 for the first harmonic). It sizes the event search's work.
+  Work fastest_rate() const {
+    using std::sqrt;
+    Work rate = 1;
+    const Work candidates[] = {sqrt(rho2_), 2 * sigma_};
+    for (const auto& c : candidates)
+      if (c > rate) rate = c;
+    for (const auto& term : forcing_.terms())
+      if (term.q > rate) rate = term.q;
+    return rate;
+  }
 
  private:
   Work omega_, sigma_, rho2_, r_, rs_;

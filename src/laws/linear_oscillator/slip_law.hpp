@@ -59,6 +59,21 @@ class LinearSlipLaw {
       // |theta| + |phase| ulps (radians per ulp).
       terms_.push_back({{f.a * sc.cos, f.a * sc.sin}, fabs(theta) + fabs(f.phase)});
     }
+    // c1 = g(tau_a) - s r - rho^2 y_a, the coefficient of G in v, summed once
+    // here: the large terms that cancel in it (a stiff spring that breaks
+    // away from near its equilibrium: rho^2 y_a ~ g ~ 1 with c1 ~ 1e-16) are
+    // then not each carried with G's own rounding, which grows with rho u
+    // (theory.md 7.3; a stop ten thousand natural periods into such a slip
+    // was taken for a touch within that noise).
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    c1_ = g0_ - o_->rho2() * y_a_;
+    Work mag_c1 = fabs(g0_) + o_->rho2() * fabs(y_a_), phase_c1 = 0;
+    for (std::size_t i = 0; i < terms_.size(); ++i) {
+      c1_ += terms_[i].a.im;
+      mag_c1 += fabs(terms_[i].a.im);
+      phase_c1 += fabs(o_->forcing().terms()[i].a) * terms_[i].arg;
+    }
+    e_c1_ = kUlps * eps * mag_c1 + eps * phase_c1;
   }
 
   int sign() const { return s_; }
@@ -83,10 +98,13 @@ class LinearSlipLaw {
     const auto& responses = o_->responses();
     Complex<Work> root_exp;
     bool have_root_exp = false;
-    // The harmonics' part of y, v, v', v'' (sums of Im(A R^(k))), with
-    // magnitudes and argument-rounding terms.
-    Work forced[5] = {0, 0, 0, 0, 0}, mag_forced[5] = {0, 0, 0, 0, 0};
-    Work phase[5] = {0, 0, 0, 0, 0};
+    // The harmonics' part of y (Im(A R)) and of v, v', v'', v''' less their
+    // G terms (Im(A Q_k)), with magnitudes and argument-rounding terms:
+    // R' = i q R + G, so R^(k+1) = Q_k + G^(k) with Q_0 = i q R and
+    // Q_(k+1) = i q (Q_k + G^(k)); the G^(k) parts go into c1 (above).
+    Work forced_y = 0, mag_forced_y = 0, phase_y = 0;
+    Work forced[4] = {0, 0, 0, 0}, mag_forced[4] = {0, 0, 0, 0};
+    Work phase[4] = {0, 0, 0, 0};
     // The steady response's v_p'' and v_p''' (for bound (B)), with magnitudes.
     Work steady2 = 0, steady3 = 0, mag_steady2 = 0, mag_steady3 = 0;
     for (std::size_t i = 0; i < forcing.size(); ++i) {
@@ -99,28 +117,31 @@ class LinearSlipLaw {
         have_root_exp = true;
       }
       const HarmonicResponseAt<Work> h = response.at(u, t, e, root_exp);
-      // R^(n+1) = i q R^(n) + G^(n) (the derivative of R' = i q R + G), not
-      // the ODE of R: heavily damped, -2 sigma R' would cancel e^{i q u} to
-      // rounding noise of the fast root's size.
+      // From R, not from the ODE of R: heavily damped, -2 sigma R' would
+      // cancel e^{i q u} to rounding noise of the fast root's size.
       const Complex<Work> iq{0, q};
-      const Complex<Work> d2r = iq * h.dr + Complex<Work>{t.dg, 0};
-      const Complex<Work> d3r = iq * d2r + Complex<Work>{t.g2, 0};
+      const Complex<Work> q0 = iq * h.r;
+      const Complex<Work> q1 = iq * (q0 + Complex<Work>{t.g, 0});
+      const Complex<Work> q2 = iq * (q1 + Complex<Work>{t.dg, 0});
       const Complex<Work>& a = terms_[i].a;
-      forced[0] += (a * h.r).im;
-      forced[1] += (a * h.dr).im;
-      forced[2] += (a * d2r).im;
-      forced[3] += (a * d3r).im;
+      forced_y += (a * h.r).im;
+      forced[0] += (a * q0).im;
+      forced[1] += (a * q1).im;
+      forced[2] += (a * q2).im;
       if constexpr (kBounds) {  // v''' only for the bounds
-        const Complex<Work> d4r = iq * d3r + Complex<Work>{t.g3, 0};
-        forced[4] += (a * d4r).im;
+        const Complex<Work> q3c = iq * (q2 + Complex<Work>{t.g2, 0});
+        forced[3] += (a * q3c).im;
         const Work abs_a = fabs(forcing[i].a);
-        const Work mag_d2r = q * h.mag_dr + t.mag_dg;
-        const Work mag_d3r = q * mag_d2r + t.mag_g2;
-        const Work mag_d4r = q * mag_d3r + t.mag_g3;
-        const Work mags[5] = {h.mag_r, h.mag_dr, mag_d2r, mag_d3r, mag_d4r};
+        const Work mag_q0 = q * h.mag_r;
+        const Work mag_q1 = q * (mag_q0 + t.mag_g);
+        const Work mag_q2 = q * (mag_q1 + t.mag_dg);
+        const Work mag_q3 = q * (mag_q2 + t.mag_g2);
+        const Work mags[4] = {mag_q0, mag_q1, mag_q2, mag_q3};
         // A's argument theta(tau_a) is rounded by up to `arg` ulps.
         const Work arg = terms_[i].arg, qu = q * u;
-        for (int k = 0; k < 5; ++k) {
+        mag_forced_y += abs_a * h.mag_r;
+        phase_y += abs_a * h.mag_r * arg;
+        for (int k = 0; k < 4; ++k) {
           mag_forced[k] += abs_a * mags[k];
           phase[k] += abs_a * mags[k] * arg;
         }
@@ -141,27 +162,32 @@ class LinearSlipLaw {
     const Work &g2 = t.g2, &g3 = t.g3, &g4 = t.g4;
     Point p;
     p.tau = tau;
-    p.y = t.phi11 * y_a_ + t.g * v_a_ + g0_ * t.g1 + forced[0];
-    p.v = -rho2 * t.g * y_a_ + t.dg * v_a_ + g0_ * t.g + forced[1];
-    p.d1 = -rho2 * t.dg * y_a_ + g2 * v_a_ + g0_ * t.dg + forced[2];
-    p.d2 = -rho2 * g2 * y_a_ + g3 * v_a_ + g0_ * g2 + forced[3];
+    p.y = t.phi11 * y_a_ + t.g * v_a_ + g0_ * t.g1 + forced_y;
+    p.v = c1_ * t.g + t.dg * v_a_ + forced[0];
+    p.d1 = c1_ * t.dg + g2 * v_a_ + forced[1];
+    p.d2 = c1_ * g2 + g3 * v_a_ + forced[2];
     if constexpr (!kBounds) return p;
-    p.d3 = -rho2 * g3 * y_a_ + g4 * v_a_ + g0_ * g3 + forced[4];
+    p.d3 = c1_ * g3 + g4 * v_a_ + forced[3];
     // Rounding: kUlps ulps of the sum of the terms' magnitudes, plus the
-    // rounding of the harmonics' arguments (phase).
+    // rounding of the harmonics' arguments (phase), plus c1's own error
+    // times the G^(k) it multiplies (their values: the argument rounding of
+    // G^(k) is in the magnitudes, times |c1|).
     const Work &mag_g2 = t.mag_g2, &mag_g3 = t.mag_g3, &mag_g4 = t.mag_g4;
-    const Work ay = fabs(y_a_), av = fabs(v_a_), a0 = fabs(g0_);
-    const Work mag_y = t.mag_phi11 * ay + t.mag_g * av + a0 * t.mag_g1 + mag_forced[0];
-    const Work mag_v = rho2 * t.mag_g * ay + t.mag_dg * av + a0 * t.mag_g + mag_forced[1];
-    const Work mag_d1 = rho2 * t.mag_dg * ay + mag_g2 * av + a0 * t.mag_dg + mag_forced[2];
-    const Work mag_d2 = rho2 * mag_g2 * ay + mag_g3 * av + a0 * mag_g2 + mag_forced[3];
-    const Work mag_d3 = rho2 * mag_g3 * ay + mag_g4 * av + a0 * mag_g3 + mag_forced[4];
+    const Work ay = fabs(y_a_), av = fabs(v_a_), a0 = fabs(g0_), ac = fabs(c1_);
     const Work k = kUlps * eps;
-    p.e_y = k * mag_y + eps * phase[0];
-    p.e_v = k * mag_v + eps * phase[1];
-    p.e_d1 = k * mag_d1 + eps * phase[2];
-    p.e_d2 = k * mag_d2 + eps * phase[3];
-    p.e_d3 = k * mag_d3 + eps * phase[4];
+    const auto c1_error = [&](const Work& value, const Work& mag) {
+      return e_c1_ * (fabs(value) + k * mag);
+    };
+    const Work mag_y = t.mag_phi11 * ay + t.mag_g * av + a0 * t.mag_g1 + mag_forced_y;
+    const Work mag_v = ac * t.mag_g + t.mag_dg * av + mag_forced[0];
+    const Work mag_d1 = ac * t.mag_dg + mag_g2 * av + mag_forced[1];
+    const Work mag_d2 = ac * mag_g2 + mag_g3 * av + mag_forced[2];
+    const Work mag_d3 = ac * mag_g3 + mag_g4 * av + mag_forced[3];
+    p.e_y = k * mag_y + eps * phase_y;
+    p.e_v = k * mag_v + eps * phase[0] + c1_error(t.g, t.mag_g);
+    p.e_d1 = k * mag_d1 + eps * phase[1] + c1_error(t.dg, t.mag_dg);
+    p.e_d2 = k * mag_d2 + eps * phase[2] + c1_error(g2, mag_g2);
+    p.e_d3 = k * mag_d3 + eps * phase[3] + c1_error(g3, mag_g3);
     // S = sqrt(w'^2 + rho^2 w^2) at tau, w = v' (see the top of this file).
     const Work w = fabs(p.d1) + p.e_d1, dw = fabs(p.d2) + p.e_d2;
     p.tail = sqrt(dw * dw + rho2 * w * w) * (1 + 16 * eps);
@@ -202,7 +228,8 @@ class LinearSlipLaw {
   const Oscillator<Work>* o_;
   int s_;
   Work tau_a_, y_a_, v_a_;
-  Work g0_ = 0;  // f0 - s r
+  Work g0_ = 0;             // f0 - s r
+  Work c1_ = 0, e_c1_ = 0;  // g(tau_a) - s r - rho^2 y_a and its rounding bound
   Work rho_ = 0;
   std::vector<Term> terms_;
 };
