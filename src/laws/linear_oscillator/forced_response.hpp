@@ -23,11 +23,10 @@
 // E - G not cancelling by more than a small factor (u |i q - p2| >= 1/4).
 #pragma once
 
+#include <boost/math/special_functions/expm1.hpp>
 #include <cmath>
 #include <limits>
 #include <vector>
-
-#include <boost/math/special_functions/expm1.hpp>
 
 #include "laws/linear_oscillator/transition.hpp"
 #include "numeric/complex.hpp"
@@ -55,6 +54,7 @@ class ForcedResponse {
     p1_ = roots.near;
     to_p1_ = iq - p1_;
     to_p2_ = iq - roots.far;
+    abs_to_p1_ = to_p1_.abs();
     abs_to_p2_ = to_p2_.abs();
     reach_limit_ = transition.rate() > q ? transition.rate() : q;
     // R = sum r_n u^n, r_0 = r_1 = 0,
@@ -78,8 +78,8 @@ class ForcedResponse {
   // (transition.root_exp(u); only read beyond the series range).
   bool needs_root_exp(const Work& u) const { return u * reach_limit_ > Work(kSeriesLimit); }
 
-  HarmonicResponseAt<Work> at(const Work& u, const Transition<Work>& t, const Complex<Work>& exp_iqu,
-                              const Complex<Work>& exp_p1u) const {
+  HarmonicResponseAt<Work> at(const Work& u, const Transition<Work>& t,
+                              const Complex<Work>& exp_iqu, const RootExp<Work>& root_exp) const {
     using boost::math::expm1;
     using std::exp;
     using std::fabs;
@@ -94,9 +94,10 @@ class ForcedResponse {
       // sum |r_n| u^n <= u^2 e^x / 2 <= 0.83 u^2.
       out.mag_r = u * u;
     } else {
+      const Complex<Work>& exp_p1u = root_exp.value;
       const Complex<Work> z = to_p1_ * u;
-      const Work abs_z = z.abs();
-      const Work abs_p1u = exp_p1u.abs();
+      const Work abs_z = abs_to_p1_ * u;
+      const Work abs_p1u = root_exp.modulus;
       Complex<Work> e;
       Work mag_e;
       if (abs_z <= 1) {
@@ -109,12 +110,12 @@ class ForcedResponse {
         e = exp_p1u * phi1 * u;
         const Work abs_phi1 = phi1.abs();
         // e^{p1 u}'s arguments are rounded by up to their size in ulps.
-        mag_e = abs_p1u * u * (abs_phi1 > 1 ? abs_phi1 : Work(1)) *
-                (1 + fabs(p1_.im) * u - p1_.re * u);
+        mag_e =
+            abs_p1u * u * (abs_phi1 > 1 ? abs_phi1 : Work(1)) * (1 + fabs(p1_.im) * u - p1_.re * u);
       } else {
         e = (exp_iqu - exp_p1u) / to_p1_;
         // The arguments q u and Im(p1) u are rounded by up to their size in ulps.
-        mag_e = (1 + q_ * u + abs_p1u * (1 + fabs(p1_.im) * u - p1_.re * u)) / to_p1_.abs();
+        mag_e = (1 + q_ * u + abs_p1u * (1 + fabs(p1_.im) * u - p1_.re * u)) / abs_to_p1_;
       }
       out.r = (e - Complex<Work>{t.g, 0}) / to_p2_;
       out.mag_r = (mag_e + t.mag_g) / abs_to_p2_;
@@ -128,9 +129,9 @@ class ForcedResponse {
   static constexpr double kSeriesLimit = 0.5;
   Work q_;
   Complex<Work> p1_, to_p1_, to_p2_;  // p1, i q - p1, i q - p2
-  Work abs_to_p2_ = 0;
-  Work reach_limit_ = 0;              // D = max(q, |p1|, |p2|) (an upper bound of it)
-  std::vector<Complex<Work>> series_;  // r_{m+2}, m = 0..M
+  Work abs_to_p1_ = 0, abs_to_p2_ = 0;
+  Work reach_limit_ = 0;                   // D = max(q, |p1|, |p2|) (an upper bound of it)
+  std::vector<Complex<Work>> series_;      // r_{m+2}, m = 0..M
   SeriesReach<Work> reach_{kSeriesLimit};  // how many terms u D needs
 };
 

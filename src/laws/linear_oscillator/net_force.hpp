@@ -32,7 +32,7 @@ class NetForce {
   struct Point {
     Work n = 0, d1 = 0, d2 = 0;  // n, n', n''
     Work e_n = 0, e_d1 = 0, e_d2 = 0;
-    Work gap = 0, e_gap = 0;     // rs - |n|, the sharper of its two forms
+    Work gap = 0, e_gap = 0;  // rs - |n|, the sharper of its two forms
   };
 
   NetForce(const Oscillator<Work>& oscillator, const Work& y)
@@ -166,12 +166,12 @@ class NetForce {
  private:
   static constexpr int kUlps = 64;
   const Oscillator<Work>* o_;
-  Work offset_;      // f0 - rho^2 y
-  Work mag_offset_;  // |f0| + rho^2 |y|
-  Work spring_ = 0;  // rho^2 y
+  Work offset_;                // f0 - rho^2 y
+  Work mag_offset_;            // |f0| + rho^2 |y|
+  Work spring_ = 0;            // rho^2 y
   Work edge_[2] = {0, 0};      // rs - s f0 for s = +1, -1
   Work mag_edge_[2] = {0, 0};  // |rs - s f0| + rho^2 |y|
-  Work n0_ = 0;      // >= |n| everywhere
+  Work n0_ = 0;                // >= |n| everywhere
 };
 
 }  // namespace frictionref::detail

@@ -40,6 +40,7 @@ class Oscillator {
       const Complex<Work> p{rho2_ - term.q * term.q, 2 * sigma_ * term.q};
       const bool resonant = p.re == 0 && p.im == 0;
       steady_.push_back(resonant ? Complex<Work>{} : Complex<Work>{1, 0} / p);
+      steady_abs_.push_back(steady_.back().abs());
       if (resonant)
         steady_bound4_ = std::numeric_limits<Work>::infinity();
       else
@@ -61,6 +62,7 @@ class Oscillator {
   // the motion itself is computed without H (forced_response.hpp).
   const std::vector<Complex<Work>>& steady() const { return steady_; }
   const Work& steady_bound4() const { return steady_bound4_; }
+  const std::vector<Work>& steady_abs() const { return steady_abs_; }  // |H|
   // The fastest rate at which the motion can turn, per radian of tau: the
   // natural frequency rho, the damping's 2 sigma, the forcing frequencies
   // (1 for the first harmonic). It sizes the event search's work.
@@ -81,6 +83,7 @@ class Oscillator {
   TransitionFunctions<Work> transition_;
   std::vector<ForcedResponse<Work>> responses_;
   std::vector<Complex<Work>> steady_;
+  std::vector<Work> steady_abs_;
   Work steady_bound4_ = 0;
 };
 

@@ -96,7 +96,7 @@ class LinearSlipLaw {
     const Transition<Work> t = o_->transition().at(u);
     const auto& forcing = o_->forcing().terms();
     const auto& responses = o_->responses();
-    Complex<Work> root_exp;
+    RootExp<Work> root_exp;
     bool have_root_exp = false;
     // The harmonics' part of y (Im(A R)) and of v, v', v'', v''' less their
     // G terms (Im(A Q_k)), with magnitudes and argument-rounding terms:
@@ -113,7 +113,7 @@ class LinearSlipLaw {
       const Complex<Work> e{sc.cos, sc.sin};
       const ForcedResponse<Work>& response = responses[i];
       if (!have_root_exp && response.needs_root_exp(u)) {
-        root_exp = o_->transition().root_exp(u);
+        root_exp = o_->transition().root_exp(u, t);
         have_root_exp = true;
       }
       const HarmonicResponseAt<Work> h = response.at(u, t, e, root_exp);
@@ -147,7 +147,7 @@ class LinearSlipLaw {
         }
         // v_p = Im(A H i q e^{i q u}): v_p'' = Im(-i q^3 A H e), v_p''' = Im(q^4 A H e).
         const Complex<Work> ahe = a * o_->steady()[i] * e;
-        const Work q3 = q * q * q, size = abs_a * o_->steady()[i].abs();
+        const Work q3 = q * q * q, size = abs_a * o_->steady_abs()[i];
         steady2 -= q3 * ahe.re;
         steady3 += q3 * q * ahe.im;
         mag_steady2 += size * q3 * (1 + arg + qu);

@@ -26,11 +26,10 @@
 // (`mag_*`), for the certified event search.
 #pragma once
 
+#include <boost/math/special_functions/expm1.hpp>
 #include <cmath>
 #include <limits>
 #include <vector>
-
-#include <boost/math/special_functions/expm1.hpp>
 
 #include "numeric/complex.hpp"
 #include "numeric/series_reach.hpp"
@@ -40,14 +39,26 @@ namespace frictionref::detail {
 
 template <class Work>
 struct Transition {
-  Work g = 0;       // G(u): y per unit initial velocity; v per unit constant forcing
-  Work dg = 1;      // G'(u): v per unit initial velocity
-  Work phi11 = 1;   // y per unit initial position
-  Work g1 = 0;      // integral of G: y per unit constant forcing
+  Work g = 0;                   // G(u): y per unit initial velocity; v per unit constant forcing
+  Work dg = 1;                  // G'(u): v per unit initial velocity
+  Work phi11 = 1;               // y per unit initial position
+  Work g1 = 0;                  // integral of G: y per unit constant forcing
   Work g2 = 0, g3 = 0, g4 = 0;  // G'', G''', G''''
   // Magnitudes: each value's rounding error is a few ulps of these.
   Work mag_g = 0, mag_dg = 1, mag_phi11 = 1, mag_g1 = 0;
   Work mag_g2 = 0, mag_g3 = 0, mag_g4 = 0;
+  // e^{p u} of the near root where the closed form computed it (beyond the
+  // series): the harmonics' responses reuse it instead of a second exp and
+  // sin_cos of the same arguments.
+  bool has_root_exp = false;
+  Work root_decay = 1, root_cos = 1, root_sin = 0;  // e^{p u} = decay (cos + i sin)
+};
+
+// e^{p u} for the near root, with its modulus.
+template <class Work>
+struct RootExp {
+  Complex<Work> value;
+  Work modulus = 1;
 };
 
 // The characteristic roots of p^2 + 2 sigma p + rho^2: `near` is the one
@@ -103,15 +114,24 @@ class TransitionFunctions {
     return {{-k1_, 0}, {-k2_, 0}};
   }
 
-  // e^{p u} for the near root (forced_response.hpp).
-  Complex<Work> root_exp(const Work& u) const {
+  // e^{p u} for the near root (forced_response.hpp), from the transition
+  // functions at the same u where they hold it.
+  RootExp<Work> root_exp(const Work& u, const Transition<Work>& at_u) const {
     using std::exp;
-    if (underdamped_) {
-      const Work e = exp(-sigma_ * u);
+    Work decay, c = 1, s = 0;
+    if (at_u.has_root_exp) {
+      decay = at_u.root_decay;
+      c = at_u.root_cos;
+      s = at_u.root_sin;
+    } else if (underdamped_) {
+      decay = exp(-sigma_ * u);
       const SinCos<Work> sc = sin_cos(nu_ * u);
-      return {e * sc.cos, e * sc.sin};
+      c = sc.cos;
+      s = sc.sin;
+    } else {
+      decay = exp(-k1_ * u);
     }
-    return {Work(exp(-k1_ * u)), 0};
+    return {{decay * c, decay * s}, decay};
   }
 
   // At u = tau - tau_a >= 0.
@@ -183,6 +203,10 @@ class TransitionFunctions {
     t.mag_dg = e * (fabs(sc.cos) + sigma_ * fabs(s)) * (1 + arg) + e * sigma_ * u;
     t.mag_phi11 = t.mag_dg;
     t.mag_g1 = (1 + t.mag_phi11) / rho2_;
+    t.has_root_exp = true;
+    t.root_decay = e;
+    t.root_cos = sc.cos;
+    t.root_sin = sc.sin;
     higher_by_ode(t);
     return t;
   }
@@ -240,6 +264,8 @@ class TransitionFunctions {
     t.mag_g2 = (k1_ * t.mag_dg + k2_ * e2) * (1 + arg);
     t.mag_g3 = (k1_ * t.mag_g2 + k2_ * k2_ * e2) * (1 + arg);
     t.mag_g4 = (k1_ * t.mag_g3 + k2_ * k2_ * k2_ * e2) * (1 + arg);
+    t.has_root_exp = true;
+    t.root_decay = e1;
     return t;
   }
 
