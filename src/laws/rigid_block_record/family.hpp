@@ -66,10 +66,9 @@ class RigidBlockRecordFamily {
         summary_(&summary) {
     using std::fabs;
     // A priori bounds: |v| <= |v0| + (max |g| + mu) (t_end - t0).
+    // max_i (offset + |a_i|) is offset + max_i |a_i|: rounding is monotone.
     const Work offset = fabs(Work(model.force_offset)) / Work(model.mass);
-    Work g_max = offset;
-    for (double a : model.ground_motion->a)
-      if (offset + fabs(Work(a)) > g_max) g_max = offset + fabs(Work(a));
+    const Work g_max = offset + Work(model.ground_motion->pga());
     const Work span = (tau_end - tau0) / omega_;
     const Work speed = fabs(Work(model.v0)) + (g_max + mu_) * span;
     const Work travel = fabs(Work(model.x0)) + speed * span;
