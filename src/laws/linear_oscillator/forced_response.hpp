@@ -104,8 +104,11 @@ class ForcedResponse {
         // phi1(z) = expm1(z) / z; Re expm1(x + i y) = expm1(x) cos y - 2 sin^2(y / 2).
         const SinCos<Work> sc = sin_cos(z.im);
         const SinCos<Work> half = sin_cos(z.im / 2);
-        const Complex<Work> em1{Work(expm1(z.re)) * sc.cos - 2 * half.sin * half.sin,
-                                Work(exp(z.re)) * sc.sin};
+        // (z.re = 0 without damping: expm1 and exp are 0 and 1 exactly.)
+        const bool undamped = z.re == 0;
+        const Work em1_re = undamped ? Work(0) : Work(expm1(z.re));
+        const Work exp_re = undamped ? Work(1) : Work(exp(z.re));
+        const Complex<Work> em1{em1_re * sc.cos - 2 * half.sin * half.sin, exp_re * sc.sin};
         const Complex<Work> phi1 = abs_z > 0 ? em1 / z : Complex<Work>{1, 0};
         e = exp_p1u * phi1 * u;
         const Work abs_phi1 = phi1.abs();

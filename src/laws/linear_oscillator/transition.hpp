@@ -129,7 +129,7 @@ class TransitionFunctions {
       c = sc.cos;
       s = sc.sin;
     } else {
-      decay = exp(-k1_ * u);
+      decay = k1_ == 0 ? Work(1) : Work(exp(-k1_ * u));  // k = 0: the root p = 0
     }
     return {{decay * c, decay * s}, decay};
   }
