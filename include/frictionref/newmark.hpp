@@ -32,6 +32,19 @@ std::string_view to_string(NewmarkMethod method);
 std::string_view to_string(Polarity polarity);
 std::optional<NewmarkMethod> newmark_method_from_string(std::string_view text);
 
+// The sizes of one batch that the front ends accept (they refuse more
+// before reading a record).
+struct NewmarkLimits {
+  static constexpr std::size_t records = 10'000;
+  static constexpr std::size_t yield_values = 10'000;
+  static constexpr double runs = 1e7;  // records x yield values x polarities
+};
+
+// The rule a yield acceleration KY [g] breaks with `method` ("" if none):
+// finite and >= 0; > 0 for SLAMMER's method. The front ends put it after
+// the value as the user typed it.
+std::string yield_accel_rule(double yield_accel_g, NewmarkMethod method);
+
 struct NewmarkOptions {
   std::vector<double> yield_accels_g;  // KY values [g]; each finite, >= 0; at least one
   bool one_way = true;                 // SLAMMER's default: the downslope block

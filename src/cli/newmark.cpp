@@ -30,10 +30,6 @@
 namespace frictionref::cli {
 namespace {
 
-constexpr std::size_t max_records = 10'000;
-constexpr std::size_t max_yield_values = 10'000;
-constexpr double max_runs = 1e7;
-
 struct NewmarkCliOptions {
   std::vector<std::string> records;
   std::vector<std::string> yield_accels;
@@ -50,9 +46,9 @@ struct NewmarkCliOptions {
 // The records as the options say to read them. Errors name the option, or
 // --record with the file (and line).
 std::vector<std::shared_ptr<const GroundMotion>> read_records(const NewmarkCliOptions& typed) {
-  if (typed.records.size() > max_records)
-    throw bad_input(
-        fmt::format("--record: {} files given, at most {}", typed.records.size(), max_records));
+  if (typed.records.size() > NewmarkLimits::records)
+    throw bad_input(fmt::format("--record: {} files given, at most {}", typed.records.size(),
+                                NewmarkLimits::records));
   ModelInput input;
   input.record_option = "--record";
   input.gravity = typed.gravity;
@@ -73,17 +69,14 @@ std::vector<std::shared_ptr<const GroundMotion>> read_records(const NewmarkCliOp
 }
 
 std::vector<double> yield_values(const NewmarkCliOptions& typed, NewmarkMethod method) {
-  if (typed.yield_accels.size() > max_yield_values)
+  if (typed.yield_accels.size() > NewmarkLimits::yield_values)
     throw bad_input(fmt::format("--yield-accel: {} values given, at most {}",
-                                typed.yield_accels.size(), max_yield_values));
+                                typed.yield_accels.size(), NewmarkLimits::yield_values));
   std::vector<double> values;
   for (const std::string& text : typed.yield_accels) {
     const double ky = parse_number({"--yield-accel", text});
-    if (!std::isfinite(ky) || !(ky >= 0))
-      throw bad_input(fmt::format("--yield-accel = {}: must be a finite number >= 0 (in g)", text));
-    if (method == NewmarkMethod::slammer && ky == 0)
-      throw bad_input(fmt::format(
-          "--yield-accel = {}: must be > 0 with --method slammer (SLAMMER divides by KY g)", text));
+    if (const std::string rule = yield_accel_rule(ky, method); !rule.empty())
+      throw bad_input(fmt::format("--yield-accel = {}: {}", text, rule));
     values.push_back(ky);
   }
   return values;
@@ -297,7 +290,7 @@ void run_newmark(const NewmarkCliOptions& typed, const Invocation& invocation) {
   const double runs = static_cast<double>(typed.records.size()) *
                       static_cast<double>(options.yield_accels_g.size()) *
                       static_cast<double>(options.polarities.size());
-  if (runs > max_runs)
+  if (runs > NewmarkLimits::runs)
     throw bad_input(fmt::format(
         "--yield-accel: {} records x {} yield values x {} polarities = {:.3g} runs, more than "
         "10^7",

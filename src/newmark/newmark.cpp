@@ -137,16 +137,21 @@ std::optional<NewmarkMethod> newmark_method_from_string(std::string_view text) {
   return std::nullopt;
 }
 
+std::string yield_accel_rule(double yield_accel_g, NewmarkMethod method) {
+  if (!std::isfinite(yield_accel_g) || !(yield_accel_g >= 0))
+    return "must be a finite number >= 0 (in g)";
+  // SLAMMER divides the ground acceleration by the yield level at rest.
+  if (method == NewmarkMethod::slammer && yield_accel_g == 0)
+    return "must be > 0 with the slammer method (SLAMMER divides by KY g)";
+  return "";
+}
+
 void NewmarkOptions::validate() const {
   if (yield_accels_g.empty())
     throw InvalidInput("yield_accels_g", "none", "needs at least one yield acceleration");
   for (const double ky : yield_accels_g) {
-    if (!std::isfinite(ky) || ky < 0)
-      throw InvalidInput("yield_accel", io::text(ky), "must be a finite number >= 0 (in g)");
-    // SLAMMER divides the ground acceleration by the yield level at rest.
-    if (method == NewmarkMethod::slammer && ky == 0)
-      throw InvalidInput("yield_accel", io::text(ky),
-                         "must be > 0 with the slammer method (SLAMMER divides by KY g)");
+    if (const std::string rule = yield_accel_rule(ky, method); !rule.empty())
+      throw InvalidInput("yield_accel", io::text(ky), rule);
   }
   if (polarities.empty()) throw InvalidInput("polarities", "none", "needs at least one polarity");
 }

@@ -23,11 +23,6 @@
 namespace frictionref::python {
 namespace {
 
-// The CLI's limits (src/cli/newmark.cpp).
-constexpr std::size_t max_records = 10'000;
-constexpr std::size_t max_yield_values = 10'000;
-constexpr double max_runs = 1e7;
-
 std::string type_name(py::handle object) {
   return py::str(py::type::handle_of(object).attr("__name__")).cast<std::string>();
 }
@@ -74,16 +69,13 @@ std::vector<Number> yield_numbers(py::handle object) {
 std::vector<double> yield_values(const std::vector<Number>& numbers, NewmarkMethod method) {
   // None given: CLI11's word for a required option left out.
   if (numbers.empty()) value_error("--yield-accel is required");
-  if (numbers.size() > max_yield_values)
+  if (numbers.size() > NewmarkLimits::yield_values)
     value_error("--yield-accel: " + std::to_string(numbers.size()) + " values given, at most " +
-                std::to_string(max_yield_values));
+                std::to_string(NewmarkLimits::yield_values));
   std::vector<double> values;
   for (const Number& ky : numbers) {
-    if (!std::isfinite(ky.value) || !(ky.value >= 0))
-      value_error("--yield-accel = " + ky.text + ": must be a finite number >= 0 (in g)");
-    if (method == NewmarkMethod::slammer && ky.value == 0)
-      value_error("--yield-accel = " + ky.text +
-                  ": must be > 0 with --method slammer (SLAMMER divides by KY g)");
+    if (const std::string rule = yield_accel_rule(ky.value, method); !rule.empty())
+      value_error("--yield-accel = " + ky.text + ": " + rule);
     values.push_back(ky.value);
   }
   return values;
@@ -143,7 +135,7 @@ py::dict newmark(py::handle records_object, py::handle yield_object, py::handle 
   const double runs = static_cast<double>(paths.size()) *
                       static_cast<double>(options.yield_accels_g.size()) *
                       static_cast<double>(options.polarities.size());
-  if (runs > max_runs) {
+  if (runs > NewmarkLimits::runs) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", runs);
     value_error("--yield-accel: " + std::to_string(paths.size()) + " records x " +
@@ -151,9 +143,9 @@ py::dict newmark(py::handle records_object, py::handle yield_object, py::handle 
                 std::to_string(options.polarities.size()) + " polarities = " + text +
                 " runs, more than 10^7");
   }
-  if (paths.size() > max_records)
+  if (paths.size() > NewmarkLimits::records)
     value_error("--record: " + std::to_string(paths.size()) + " files given, at most " +
-                std::to_string(max_records));
+                std::to_string(NewmarkLimits::records));
 
   // Set with the GIL: the callback holds a Python object.
   options.progress = progress(progress_object);

@@ -36,7 +36,6 @@ namespace frictionref::detail {
 // ground motion with no spring, damper or harmonic force.
 template <class Real>
 void require_rigid_block_record(const BasicModel<Real>& model) {
-  const std::string file = model.ground_motion ? model.ground_motion->file : "";
   const char* rule =
       "a ground motion is solved for the rigid block so far (Newmark's block: no spring, damper "
       "or harmonic force; give --stiffness 0 --damping 0 --amplitude 0 and no --harmonic)";
@@ -44,7 +43,6 @@ void require_rigid_block_record(const BasicModel<Real>& model) {
   if (model.damping != 0) throw InvalidInput("damping", to_text(model.damping), rule);
   if (model.amplitude != 0) throw InvalidInput("amplitude", to_text(model.amplitude), rule);
   if (!model.harmonics.empty()) throw InvalidInput("harmonics", "given", rule);
-  (void)file;
 }
 
 template <class Real>
