@@ -17,6 +17,35 @@ class PhaseFormula {
   virtual BasicState<Real> at(const Real& t) const = 0;
 };
 
+// The rules every family's dense output shares. A stick holds its rest
+// position (the stored end state at t_end).
+template <class Real>
+BasicState<Real> rest_state(const BasicPhase<Real>& phase, const Real& t) {
+  BasicState<Real> state;
+  state.t = t;
+  state.phase = phase.kind;
+  state.x = t == phase.t_end ? phase.x_end : phase.x_begin;
+  state.v = t == phase.t_end ? phase.v_end : t == phase.t_begin ? phase.v_begin : 0;
+  return state;
+}
+
+// Inside a slip, the formula's x, v and a, except at the phase's own ends,
+// where x and v are the stored states exactly: samples at event times then
+// match the event table.
+template <class Real>
+BasicState<Real> slip_state(const BasicPhase<Real>& phase, const Real& t, const Real& x,
+                            const Real& v, const Real& a) {
+  BasicState<Real> state{t, x, v, a, phase.kind};
+  if (t == phase.t_end) {
+    state.x = phase.x_end;
+    state.v = phase.v_end;
+  } else if (t == phase.t_begin) {
+    state.x = phase.x_begin;
+    state.v = phase.v_begin;
+  }
+  return state;
+}
+
 // The formula of the model's family of laws for `phase`.
 template <class Real>
 std::unique_ptr<const PhaseFormula<Real>> make_phase_formula(const BasicModel<Real>& model,

@@ -20,28 +20,11 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
              Work(phase.v_begin)) {}
 
   BasicState<Real> at(const Real& t) const override {
-    BasicState<Real> state;
-    state.t = t;
-    state.phase = phase_.kind;
-    if (phase_.kind == PhaseKind::stick) {
-      state.x = t == phase_.t_end ? phase_.x_end : phase_.x_begin;
-      state.v = t == phase_.t_end ? phase_.v_end : t == phase_.t_begin ? phase_.v_begin : 0;
-      state.a = 0;
-      return state;
-    }
+    if (phase_.kind == PhaseKind::stick) return rest_state(phase_, t);
     const auto point = law_.point(omega_ * Work(t));
-    state.a = Real(law_.acceleration_at(point.at));
-    if (t == phase_.t_end) {
-      state.x = phase_.x_end;
-      state.v = phase_.v_end;
-    } else if (t == phase_.t_begin) {
-      state.x = phase_.x_begin;
-      state.v = phase_.v_begin;
-    } else {
-      state.x = Real(law_.position(point));
-      state.v = Real(Work(law_.sign()) * point.speed);  // s (s v) = v
-    }
-    return state;
+    // v = s (s v).
+    return slip_state(phase_, t, Real(law_.position(point)), Real(Work(law_.sign()) * point.speed),
+                      Real(law_.acceleration_at(point.at)));
   }
 
  private:

@@ -26,29 +26,10 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   }
 
   BasicState<Real> at(const Real& t) const override {
-    BasicState<Real> state;
-    state.t = t;
-    state.phase = phase_.kind;
-    if (!law_) {
-      state.x = t == phase_.t_end ? phase_.x_end : phase_.x_begin;
-      state.v = t == phase_.t_end ? phase_.v_end : t == phase_.t_begin ? phase_.v_begin : 0;
-      state.a = 0;
-      return state;
-    }
+    if (!law_) return rest_state(phase_, t);
     const Work omega = oscillator_.omega();
     const auto q = law_->point(omega * Work(t));
-    state.a = Real(law_->acceleration(q));
-    if (t == phase_.t_end) {
-      state.x = phase_.x_end;
-      state.v = phase_.v_end;
-    } else if (t == phase_.t_begin) {
-      state.x = phase_.x_begin;
-      state.v = phase_.v_begin;
-    } else {
-      state.x = Real(q.y / omega);
-      state.v = Real(q.v);
-    }
-    return state;
+    return slip_state(phase_, t, Real(q.y / omega), Real(q.v), Real(law_->acceleration(q)));
   }
 
  private:

@@ -45,28 +45,10 @@ class RigidBlockRecordFormula final : public PhaseFormula<Real> {
   }
 
   BasicState<Real> at(const Real& t) const override {
-    BasicState<Real> state;
-    state.t = t;
-    state.phase = phase_.kind;
-    if (pieces_.empty()) {  // a stick
-      state.x = t == phase_.t_end ? phase_.x_end : phase_.x_begin;
-      state.v = t == phase_.t_end ? phase_.v_end : t == phase_.t_begin ? phase_.v_begin : 0;
-      state.a = 0;
-      return state;
-    }
+    if (pieces_.empty()) return rest_state(phase_, t);  // a stick
     const auto [piece, h] = piece_at(t);
-    state.a = Real(piece.acceleration_at(h));
-    if (t == phase_.t_end) {
-      state.x = phase_.x_end;
-      state.v = phase_.v_end;
-    } else if (t == phase_.t_begin) {
-      state.x = phase_.x_begin;
-      state.v = phase_.v_begin;
-    } else {
-      state.x = Real(piece.position_at(h));
-      state.v = Real(piece.velocity_at(h));
-    }
-    return state;
+    return slip_state(phase_, t, Real(piece.position_at(h)), Real(piece.velocity_at(h)),
+                      Real(piece.acceleration_at(h)));
   }
 
  private:
