@@ -90,6 +90,55 @@ NewmarkResult exact_analysis(const std::shared_ptr<const GroundMotion>& model_re
   return result;
 }
 
+// One analysis, given the record as read and negated (either may be null
+// when the method and polarity do not need it).
+NewmarkResult analysis(const std::shared_ptr<const GroundMotion>& as_read,
+                       const std::shared_ptr<const GroundMotion>& negative, double yield_accel_g,
+                       bool one_way, Polarity polarity, NewmarkMethod method) {
+  NewmarkResult result;
+  if (method == NewmarkMethod::exact) {
+    // x in the model is SLAMMER's downslope displacement when the model's
+    // ground moves against the record (newmark.hpp).
+    result =
+        exact_analysis(polarity == Polarity::normal ? negative : as_read, yield_accel_g, one_way);
+  } else {
+    SlammerOptions slammer;
+    slammer.yield_accel_g = yield_accel_g;
+    slammer.two_way = !one_way;
+    slammer.inverse = polarity == Polarity::inverse;
+    const SlammerResult run =
+        slammer_rigid_block(polarity == Polarity::inverse ? *negative : *as_read, slammer);
+    result.displacement_at_record_end = run.displacement;
+    // SLAMMER stops at the last sample; its answer is final if the block is
+    // at rest there by its own threshold.
+    if (run.at_rest_at_end) result.permanent_displacement = run.displacement;
+    result.slip_episodes = run.slip_episodes;
+    result.max_relative_velocity = run.max_relative_velocity;
+  }
+  result.record = as_read->file;
+  result.yield_accel_g = yield_accel_g;
+  result.polarity = polarity;
+  result.method = method;
+  return result;
+}
+
+// SLAMMER integrates at the record's step.
+void require_uniform_step(const GroundMotion& record) {
+  if (!record.dt)
+    throw InvalidInput("record", record.file,
+                       "has no uniform step (a table of times); SLAMMER's algorithm integrates "
+                       "at the record's step: give an .AT2 file or one column with --record-dt");
+}
+
+// The exact method's normal polarity and SLAMMER's inverse one run on the
+// record negated.
+bool needs_negated(const NewmarkOptions& options) {
+  for (const Polarity p : options.polarities) {
+    if ((options.method == NewmarkMethod::exact) == (p == Polarity::normal)) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Model newmark_model(std::shared_ptr<const GroundMotion> model_record, double yield_accel_g,
@@ -155,59 +204,6 @@ void NewmarkOptions::validate() const {
   }
   if (polarities.empty()) throw InvalidInput("polarities", "none", "needs at least one polarity");
 }
-
-namespace {
-
-// One analysis, given the record as read and negated (either may be null
-// when the method and polarity do not need it).
-NewmarkResult analysis(const std::shared_ptr<const GroundMotion>& as_read,
-                       const std::shared_ptr<const GroundMotion>& negative, double yield_accel_g,
-                       bool one_way, Polarity polarity, NewmarkMethod method) {
-  NewmarkResult result;
-  if (method == NewmarkMethod::exact) {
-    // x in the model is SLAMMER's downslope displacement when the model's
-    // ground moves against the record (newmark.hpp).
-    result =
-        exact_analysis(polarity == Polarity::normal ? negative : as_read, yield_accel_g, one_way);
-  } else {
-    SlammerOptions slammer;
-    slammer.yield_accel_g = yield_accel_g;
-    slammer.two_way = !one_way;
-    slammer.inverse = polarity == Polarity::inverse;
-    const SlammerResult run =
-        slammer_rigid_block(polarity == Polarity::inverse ? *negative : *as_read, slammer);
-    result.displacement_at_record_end = run.displacement;
-    // SLAMMER stops at the last sample; its answer is final if the block is
-    // at rest there by its own threshold.
-    if (run.at_rest_at_end) result.permanent_displacement = run.displacement;
-    result.slip_episodes = run.slip_episodes;
-    result.max_relative_velocity = run.max_relative_velocity;
-  }
-  result.record = as_read->file;
-  result.yield_accel_g = yield_accel_g;
-  result.polarity = polarity;
-  result.method = method;
-  return result;
-}
-
-// SLAMMER integrates at the record's step.
-void require_uniform_step(const GroundMotion& record) {
-  if (!record.dt)
-    throw InvalidInput("record", record.file,
-                       "has no uniform step (a table of times); SLAMMER's algorithm integrates "
-                       "at the record's step: give an .AT2 file or one column with --record-dt");
-}
-
-// The exact method's normal polarity and SLAMMER's inverse one run on the
-// record negated.
-bool needs_negated(const NewmarkOptions& options) {
-  for (const Polarity p : options.polarities) {
-    if ((options.method == NewmarkMethod::exact) == (p == Polarity::normal)) return true;
-  }
-  return false;
-}
-
-}  // namespace
 
 NewmarkResult newmark_analysis(const GroundMotion& record, double yield_accel_g, bool one_way,
                                Polarity polarity, NewmarkMethod method) {
