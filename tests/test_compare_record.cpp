@@ -66,15 +66,11 @@ std::shared_ptr<const GroundMotion> sampled(F f, double t_end, double h) {
   return r;
 }
 
-// An independent stiff-spring code (as in test_comparison.cpp) with the
-// record's force -m a_g(t): friction through a spring K_f in series with a
-// Coulomb slider, explicit central differences, archived every `archive`.
+// The stiff-spring code of compare_helpers.hpp under the record's force
+// -m a_g(t), its own interpolation of the record, walked forward with the step.
 TimeHistory stiff_spring_candidate(const Model& m, double t_end, double k_f, double dt,
                                    double archive) {
   const GroundMotion& record = *m.ground_motion;
-  const auto every = static_cast<std::int64_t>(std::llround(archive / dt));
-  const auto steps = static_cast<std::int64_t>(std::llround(t_end / dt));
-  // The record is walked forward with the step (no search from the start).
   std::size_t i = 0;
   const auto force = [&](double t) {
     while (i + 2 < record.t.size() && record.t[i + 1] <= t) ++i;
@@ -82,30 +78,8 @@ TimeHistory stiff_spring_candidate(const Model& m, double t_end, double k_f, dou
     const double s = (t - record.t[i]) / (record.t[i + 1] - record.t[i]);
     return -m.mass * (record.a[i] + s * (record.a[i + 1] - record.a[i]));
   };
-  double x = 0, z = 0, f = 0;
-  double v_half = -0.5 * dt * force(0) / m.mass;
-  TimeHistory history;
-  history.x.emplace();
-  for (std::int64_t n = 0; n <= steps; ++n) {
-    const double t = static_cast<double>(n) * dt;
-    const double trial = -k_f * (x - z);
-    if (std::fabs(trial) > m.friction) {
-      f = std::copysign(m.friction, trial);
-      z = x + f / k_f;
-    } else {
-      f = trial;
-    }
-    const double v_next = v_half + dt * (force(t) + f) / m.mass;
-    if (n % every == 0) {
-      history.t.push_back(static_cast<double>(n / every) * archive);
-      history.v.push_back(0.5 * (v_half + v_next));
-      history.x->push_back(x);
-    }
-    x += dt * v_next;
-    v_half = v_next;
-  }
-  history.source = "stiff spring on the record";
-  return history;
+  return testing::stiff_spring_history(m, t_end, force, k_f, dt, archive,
+                                       "stiff spring on the record");
 }
 
 // ---------------------------------------------------------------------------

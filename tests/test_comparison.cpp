@@ -34,40 +34,11 @@ using testing::seed_model;
 
 using testing::expect_invalid;
 
-// An independent stiff-spring code (THEORY.md, "the stiff-spring model"):
-// friction -K_f (x - z) through a spring in series with a Coulomb slider z,
-// clipped to +-R (return mapping); explicit central differences. Archives t,
-// v (the mean of the two half-step velocities) and x every `archive` time.
+// The stiff-spring code of compare_helpers.hpp under the seed's force.
 TimeHistory stiff_spring_candidate(const Model& m, double t_end, double k_f = 1e7, double dt = 1e-5,
                                    double archive = 0.01) {
-  const auto every = static_cast<std::int64_t>(std::llround(archive / dt));
-  const auto steps = static_cast<std::int64_t>(std::llround((t_end - m.t0) / dt));
   const auto force = [&](double t) { return m.amplitude * std::sin(m.omega * t); };
-  double x = m.x0, z = m.x0;
-  double f = 0;                                                  // friction force on the mass
-  double v_half = m.v0 - 0.5 * dt * (force(m.t0) + f) / m.mass;  // v at t0 - dt/2
-  TimeHistory history;
-  history.x.emplace();
-  for (std::int64_t n = 0; n <= steps; ++n) {
-    const double t = m.t0 + static_cast<double>(n) * dt;
-    const double trial = -k_f * (x - z);
-    if (std::fabs(trial) > m.friction) {
-      f = std::copysign(m.friction, trial);
-      z = x + f / k_f;  // the slider slips so the spring carries exactly R
-    } else {
-      f = trial;
-    }
-    const double v_next = v_half + dt * (force(t) + f) / m.mass;
-    if (n % every == 0) {
-      history.t.push_back(m.t0 + static_cast<double>(n / every) * archive);
-      history.v.push_back(0.5 * (v_half + v_next));
-      history.x->push_back(x);
-    }
-    x += dt * v_next;
-    v_half = v_next;
-  }
-  history.source = "stiff spring K_f=1e7";
-  return history;
+  return testing::stiff_spring_history(m, t_end, force, k_f, dt, archive, "stiff spring K_f=1e7");
 }
 
 // Regularized friction -R tanh(v / eps): the mass never stops, it creeps at
