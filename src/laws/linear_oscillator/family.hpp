@@ -276,7 +276,21 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   using std::sqrt;
   const Work omega = o_.omega();
   const LinearSlipLaw<Work> law(o_, start.sign, start.tau, omega * start.x, start.v);
-  const auto jet_at = [&law](const Work& t) { return law.jet(law.point(t)); };
+  // The points with error bounds, the last one kept: the search's first
+  // step often lands where the noise level after a start was just taken
+  // (one resolution on), and the stop's point is the bracket's end.
+  struct Bounded {
+    Work tau = std::numeric_limits<Work>::quiet_NaN();
+    typename LinearSlipLaw<Work>::Point point;
+  } bounded;
+  const auto bounded_point = [&law, &bounded ](const Work& t) -> const auto& {
+    if (!(t == bounded.tau)) {
+      bounded.point = law.point(t);
+      bounded.tau = t;
+    }
+    return bounded.point;
+  };
+  const auto jet_at = [&law, &bounded_point](const Work& t) { return law.jet(bounded_point(t)); };
   auto search = probe(jet_at, [&law](const Work& t, const Jet<Work>& at, const Work& h) {
     return law.third_bound(t, at, h);
   });
@@ -297,7 +311,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   const auto f = [&at, &s](const Work& t) { return s * at(t).v; };
   const auto df = [&at, &s](const Work& t) { return s * at(t).d1; };
   Work from = start.tau;
-  Jet<Work> at_from = law.jet(law.point(start.tau));
+  Jet<Work> at_from = law.jet(bounded_point(start.tau));
   // Zeros are not looked for within `blind` of `from` after a start (or a
   // touch) at v = 0: the stretch where v stays within a few rounding errors
   // of zero, from the jet there (f' u + f'' u^2 / 2 = 4 e0), and at least
@@ -332,10 +346,10 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // the stretch is cut to where the noise is still a sixteenth of it, so that
   // no oscillation of v resolvable later in it is skipped (a stretch of 68
   // time units passed over ten reversals: found by fuzzing).
-  const auto within_noise = [&law](const Work& from_tau, Work stretch, const Work& e0,
-                                   const Work& res) {
+  const auto within_noise = [&bounded_point](const Work& from_tau, Work stretch, const Work& e0,
+                                             const Work& res) {
     for (int i = 0; i < 64 && stretch > res; ++i) {
-      if (law.point(from_tau + stretch).e_v * 16 >= e0) break;
+      if (bounded_point(from_tau + stretch).e_v * 16 >= e0) break;
       stretch /= 2;
     }
     return stretch > res ? stretch : res;
@@ -348,7 +362,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   if (start.v == 0) {
     const Work res = Traits::time_resolution(from);
     Jet<Work> noisy = at_from;
-    const Jet<Work> later = law.jet(law.point(from + res));
+    const Jet<Work> later = law.jet(bounded_point(from + res));
     if (later.e0 > noisy.e0) noisy.e0 = later.e0;
     if (later.e1 > noisy.e1) noisy.e1 = later.e1;
     blind = within_noise(from, blind_after_rest(noisy, from, omega * start.x, res), noisy.e0, res);
@@ -382,7 +396,8 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     // stretch; its end is taken as the stop, not the start (where the at-rest
     // rule has just said "slide").
     const Work root = bracket.at_lo.f > 0 ? root_in(bracket, cached_jet, third, f, df) : bracket.hi;
-    const auto q = law.point(root);  // with its rounding bounds: N at the stop and the touch's jet
+    const auto q =
+        bounded_point(root);  // with its rounding bounds: N at the stop and the touch's jet
     const Work eps = std::numeric_limits<Work>::epsilon();
     const Work damping = 2 * o_.sigma() * q.v;
     ForceAtStop at_stop;
