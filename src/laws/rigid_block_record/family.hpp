@@ -108,11 +108,15 @@ template <class Real>
 auto RigidBlockRecordFamily<Real>::stick_end(const Work& tau, const Work& /*x*/)
     -> Breakaway<Work> {
   Breakaway<Work> result;
-  for (std::size_t k = net_.segment_at(tau); k < net_.segments(); ++k) {
+  const std::size_t first = net_.segment_at(tau);
+  // Interior segments that begin after tau (k > first) and end before the
+  // horizon (k < last) may be skipped on their sample values.
+  const std::size_t last = std::min(net_.first_ending_at_or_after(tau_end_), net_.samples());
+  const double band = Net::band_in_double(mu_static_);
+  for (std::size_t k = first; k < net_.segments(); ++k) {
     // Most of a stick's segments lie well inside the band: skip them on
     // their sample values alone (net_acceleration.hpp).
-    if (k >= 1 && k < net_.samples() && net_.begin_of(k) > tau && net_.end_of(k) < tau_end_ &&
-        net_.strictly_inside(k, mu_static_, one_way_)) {
+    if (k > first && k >= 1 && k < last && net_.strictly_inside(k, band, one_way_)) {
       ++summary_->sign_tests;
       continue;
     }

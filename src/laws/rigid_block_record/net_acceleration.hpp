@@ -44,7 +44,8 @@ class NetAcceleration {
         omega_(omega),
         t_(record_->t.data()),
         a_(record_->a.data()),
-        n_(record_->t.size()) {}
+        n_(record_->t.size()),
+        offset_double_(static_cast<double>(offset)) {}
 
   std::size_t segments() const { return n_ + 1; }
 
@@ -83,17 +84,40 @@ class NetAcceleration {
   // slack is 2^-40 of them): then g, linear between them, reaches the band
   // nowhere on the segment, and a stick may skip it without the division
   // segment() costs. Same result as the full test, faster.
-  bool strictly_inside(std::size_t k, const Work& band, bool below_only) const {
+  //
+  // In double (a stick walks every sample with it): `band` is the band as
+  // band_in_double() gives it, and the slack of 2^-39 covers double's own
+  // rounding (a few 2^-53 of the same magnitudes), so that a segment passed
+  // here also passes the test in the work type with slack 2^-40.
+  bool strictly_inside(std::size_t k, double band, bool below_only) const {
     using std::fabs;
-    const Work a0(a_[k - 1]), a1(a_[k]);
-    const Work g0 = offset_ - a0, g1 = offset_ - a1;
-    const Work slack = (fabs(a0) + fabs(a1) + fabs(offset_)) * Work(0x1p-40);
+    const double a0 = a_[k - 1], a1 = a_[k];
+    const double g0 = offset_double_ - a0, g1 = offset_double_ - a1;
+    const double slack = (fabs(a0) + fabs(a1) + fabs(offset_double_)) * 0x1p-39;
     if (below_only) return g0 + slack < band && g1 + slack < band;
     return fabs(g0) + slack < band && fabs(g1) + slack < band;
   }
-  // tau at the start of segment k >= 1 and at the end of segment k < samples.
-  Work begin_of(std::size_t k) const { return tau_at(k - 1); }
-  Work end_of(std::size_t k) const { return tau_at(k); }
+  // A band for strictly_inside: rounded towards 0 (a double not above it).
+  static double band_in_double(const Work& band) {
+    double b = static_cast<double>(band);
+    if (Work(b) > band) b = std::nextafter(b, 0.0);
+    return b;
+  }
+  // The first segment k >= 1 whose end is at or after tau (samples() if none
+  // among the interior ones).
+  std::size_t first_ending_at_or_after(const Work& tau) const {
+    std::size_t low = 0, count = n_;  // lower_bound over tau_i
+    while (count > 0) {
+      const std::size_t step = count / 2;
+      if (tau_at(low + step) < tau) {
+        low += step + 1;
+        count -= step + 1;
+      } else {
+        count = step;
+      }
+    }
+    return low;
+  }
   std::size_t samples() const { return n_; }
 
   // g at tau on segment s (tau in [s.begin, s.end]; the left limit at s.end).
@@ -111,6 +135,7 @@ class NetAcceleration {
   const double* t_;  // the samples' times
   const double* a_;  // a_g at t_i
   std::size_t n_;
+  double offset_double_;  // F0 / m rounded to double (within 2^-53 of it)
 };
 
 }  // namespace frictionref::detail
