@@ -67,11 +67,8 @@ class Oscillator {
   // natural frequency rho, the damping's 2 sigma, the forcing frequencies
   // (1 for the first harmonic). It sizes the event search's work.
   Work fastest_rate() const {
-    using std::sqrt;
-    Work rate = 1;
-    const Work candidates[] = {sqrt(rho2_), 2 * sigma_};
-    for (const auto& c : candidates)
-      if (c > rate) rate = c;
+    // The transient's rate max(2 sigma, rho) is the transition functions'.
+    Work rate = transition_.rate() > 1 ? transition_.rate() : Work(1);
     for (const auto& term : forcing_.terms())
       if (term.q > rate) rate = term.q;
     return rate;
