@@ -124,6 +124,35 @@ TEST(RigidBlockRecord, QuietBeforeTheFirstSample) {
   EXPECT_EQ(s.phases[1].kind, PhaseKind::slip_forward);
 }
 
+// A slip that crosses a sample and stops where the closed-form root is
+// already exact: Newton's correction there is below an ulp, and was taken
+// for a step outside the bracket, which bisected away from the root (the
+// stop came 6.5e-5 s late; found by checking the general family's laws
+// against these). The samples are those of that finding. The expected stop
+// is the quadratic's root on the second interval, computed here in long
+// double from the slip's own integrals.
+TEST(RigidBlockRecord, StopWhereNewtonHasNothingLeftToCorrect) {
+  const double a0 = 0.70000000000000018, a1 = 1.2599999999999998, a2 = -3.3319999999999999;
+  const double t0 = 0.61, t1 = 0.62, t2 = 0.63;
+  const Solution s = solve(block(record({t0, t1, t2}, {a0, a1, a2}), 1, 1.2), 0.7);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  ASSERT_GE(s.phases.size(), 3u);
+  // Breakaway where a_g reaches Rs = 1.2 (g = -a_g = -Rs), backwards.
+  const long double k1 = (static_cast<long double>(a1) - a0) / (static_cast<long double>(t1) - t0);
+  const long double tb = t0 + (1.2L - a0) / k1;
+  EXPECT_NEAR(s.phases[0].t_end, static_cast<double>(tb), 1e-16);
+  ASSERT_EQ(s.phases[1].kind, PhaseKind::slip_backward);
+  // v' = -a_g + R from v = 0 at tb: v(t1) = int_tb^t1 (1 - a0 - k1 (t - t0)) dt.
+  const long double d = t1 - tb;
+  const long double v1 = (1 - a0 - k1 * (tb - t0)) * d - k1 * d * d / 2;
+  // On [t1, t2): v = v1 + (1 - a1) h - k2 h^2 / 2 = 0, the root after the vertex.
+  const long double k2 = (static_cast<long double>(a2) - a1) / (static_cast<long double>(t2) - t1);
+  const long double A = -k2 / 2, B = 1 - static_cast<long double>(a1), C = v1;
+  const long double h = (-B + sqrtl(B * B - 4 * A * C)) / (2 * A);
+  EXPECT_GT(h, 0);
+  EXPECT_NEAR(s.phases[1].t_end, static_cast<double>(t1 + h), 4e-16);
+}
+
 TEST(RigidBlockRecord, RefusesWhatItDoesNotSolveYet) {
   Model m = block(record({0, 1}, {1, 1}), 0.5);
   m.stiffness = 1;
