@@ -7,7 +7,9 @@
 //   y(u) = Phi11 y_a + G  v_a + p0 G1,      v(u) = -rho^2 G y_a + G' v_a + p0 G,
 //
 // with G the impulse response (G(0) = 0, G'(0) = 1), Phi11 = G' + 2 sigma G and
-// G1 = integral of G. One set of formulas would lose digits somewhere (near
+// G1 = integral of G. A forcing ramp p1 u (a ground record, linear between
+// its samples) adds p1 G2 to y and p1 G1 to v, G2 = integral of G1
+// = (u - G - 2 sigma G1) / rho^2. One set of formulas would lose digits somewhere (near
 // critical damping the over- and underdamped forms divide by ~0; for short
 // times 1 - Phi11 cancels; a slow overdamped root makes 1 - Phi11 tiny), so:
 //
@@ -43,9 +45,10 @@ struct Transition {
   Work dg = 1;                  // G'(u): v per unit initial velocity
   Work phi11 = 1;               // y per unit initial position
   Work g1 = 0;                  // integral of G: y per unit constant forcing
+  Work ramp = 0;                // integral of G1: y per unit slope of the forcing
   Work g2 = 0, g3 = 0, g4 = 0;  // G'', G''', G''''
   // Magnitudes: each value's rounding error is a few ulps of these.
-  Work mag_g = 0, mag_dg = 1, mag_phi11 = 1, mag_g1 = 0;
+  Work mag_g = 0, mag_dg = 1, mag_phi11 = 1, mag_g1 = 0, mag_ramp = 0;
   Work mag_g2 = 0, mag_g3 = 0, mag_g4 = 0;
   // e^{p u} of the near root where the closed form computed it (beyond the
   // series): the harmonics' responses reuse it instead of a second exp and
@@ -97,9 +100,10 @@ class TransitionFunctions {
       for (int n = 0; n + 2 <= terms; ++n)
         c[n + 2] = -(2 * sigma * Work(n + 1) * c[n + 1] + rho2 * c[n]) / Work((n + 1) * (n + 2));
       for (int n = 1; n <= terms; ++n) {
-        g_.push_back(c[n]);                 // of u^n
-        dg_.push_back(Work(n) * c[n]);      // of u^(n-1)
-        g1_.push_back(c[n] / Work(n + 1));  // of u^(n+1)
+        g_.push_back(c[n]);                               // of u^n
+        dg_.push_back(Work(n) * c[n]);                    // of u^(n-1)
+        g1_.push_back(c[n] / Work(n + 1));                // of u^(n+1)
+        ramp_.push_back(c[n] / Work((n + 1) * (n + 2)));  // of u^(n+2)
       }
     }
   }
@@ -156,31 +160,36 @@ class TransitionFunctions {
       t.dg = 1;
       t.phi11 = 1;
       t.g1 = u * u / 2;
+      t.ramp = u * u * u / 6;
       t.mag_g = u;
       t.mag_dg = 1;
       t.mag_phi11 = 1;
       t.mag_g1 = t.g1;
+      t.mag_ramp = t.ramp;
       return t;  // G'' = G''' = G'''' = 0
     }
     // Horner sums of the first N precomputed coefficients (c_n u^(n-1),
     // n >= 1), N the fewest this u needs.
     const std::size_t n = reach_.index_for(u * rate_);
-    Work g = 0, dg = 0, g1 = 0;
+    Work g = 0, dg = 0, g1 = 0, ramp = 0;
     for (std::size_t i = n + 1; i-- > 0;) {
       g = g * u + g_[i];
       dg = dg * u + dg_[i];
       g1 = g1 * u + g1_[i];
+      ramp = ramp * u + ramp_[i];
     }
     t.g = g * u;
     t.dg = dg;
     t.g1 = g1 * u * u;
+    t.ramp = ramp * u * u * u;
     t.phi11 = t.dg + 2 * sigma_ * t.g;
     // |c_n| <= rate^(n-1) / (n-1)! bounds the sums of |terms| with u rate <= 1
-    // by e u, 2 e and e u^2 / 2.
+    // by e u, 2 e, e u^2 / 2 and e u^3 / 6.
     t.mag_g = 3 * u;
     t.mag_dg = 6;
     t.mag_phi11 = 6 + 6 * sigma_ * u;
     t.mag_g1 = 3 * u * u / 2;
+    t.mag_ramp = u * u * u / 2;
     higher_by_ode(t);
     return t;
   }
@@ -203,6 +212,7 @@ class TransitionFunctions {
     t.mag_dg = e * (fabs(sc.cos) + sigma_ * fabs(s)) * (1 + arg) + e * sigma_ * u;
     t.mag_phi11 = t.mag_dg;
     t.mag_g1 = (1 + t.mag_phi11) / rho2_;
+    ramp_from_g1(u, t);
     t.has_root_exp = true;
     t.root_decay = e;
     t.root_cos = sc.cos;
@@ -246,13 +256,19 @@ class TransitionFunctions {
     if (rho2_ > 0 && (t.phi11 <= Work(0.5) || x < 1)) {
       t.g1 = (1 - t.phi11) / rho2_;
       t.mag_g1 = (1 + t.mag_phi11) / rho2_;
+      ramp_from_g1(u, t);
     } else {
       // Slow root: G1 = u [phi1(-k1 u) - phi1(-k2 u)] / (k2 - k1), with
-      // (k2 - k1) u = 2 mu u >= 1.
+      // (k2 - k1) u = 2 mu u >= 1, and likewise
+      // G2 = u^2 [phi2(-k1 u) - phi2(-k2 u)] / (k2 - k1).
       const Work p1 = phi1(-k1_ * u);
       const Work p2 = phi1(-k2_ * u);
       t.g1 = u * (p1 - p2) / (2 * mu_);
       t.mag_g1 = u * (fabs(p1) + fabs(p2)) / (2 * mu_) * (1 + arg);
+      const Work r1 = phi2(-k1_ * u);
+      const Work r2 = phi2(-k2_ * u);
+      t.ramp = u * u * (r1 - r2) / (2 * mu_);
+      t.mag_ramp = u * u * (fabs(r1) + fabs(r2)) / (2 * mu_) * (1 + arg);
     }
     // G^(n+1) = -k1 G^(n) + (-k2)^n e2 (from G = (e1 - e2) / (k2 - k1)):
     // exact in relative terms on the slow tail, where the ODE's form
@@ -275,14 +291,38 @@ class TransitionFunctions {
     return z == 0 ? Work(1) : Work(expm1(z) / z);
   }
 
+  // (e^z - 1 - z) / z^2 for z <= 0, 1/2 at z = 0: its Taylor series
+  // sum z^n / (n + 2)! where e^z - 1 - z would cancel (|z| <= 1/2), else
+  // directly (there the cancellation costs at most a factor 4).
+  static Work phi2(const Work& z) {
+    using boost::math::expm1;
+    using std::fabs;
+    if (fabs(z) > Work(0.5)) return (expm1(z) - z) / (z * z);
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    Work term = Work(1) / 2, sum = term;
+    for (int n = 1; n < 200 && fabs(term) > eps * fabs(sum) / 16; ++n) {
+      term *= z / Work(n + 2);
+      sum += term;
+    }
+    return sum;
+  }
+
+  // G2 = (u - G - 2 sigma G1) / rho^2 (the ODE integrated twice), beyond the
+  // series: there u rate > 1/2, so u - G cancels by at most a small factor,
+  // which the magnitude carries.
+  void ramp_from_g1(const Work& u, Transition<Work>& t) const {
+    t.ramp = (u - t.g - 2 * sigma_ * t.g1) / rho2_;
+    t.mag_ramp = (u + t.mag_g + 2 * sigma_ * t.mag_g1) / rho2_;
+  }
+
   Work sigma_, rho2_, rho_ = 0, rate_ = 0;
   bool underdamped_ = false;
   Work nu_ = 0;           // underdamped: sqrt(rho^2 - sigma^2)
   Work mu_ = 0;           // overdamped: sqrt(sigma^2 - rho^2)
   Work k1_ = 0, k2_ = 0;  // decay rates sigma -+ mu
-  // Series coefficients, index i for n = i + 1: c_n, n c_n, c_n / (n + 1);
-  // reach_: how many of them u rate needs.
-  std::vector<Work> g_, dg_, g1_;
+  // Series coefficients, index i for n = i + 1: c_n, n c_n, c_n / (n + 1),
+  // c_n / ((n + 1)(n + 2)); reach_: how many of them u rate needs.
+  std::vector<Work> g_, dg_, g1_, ramp_;
   SeriesReach<Work> reach_{kSeriesLimit};
 };
 
