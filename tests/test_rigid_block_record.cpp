@@ -153,13 +153,9 @@ TEST(RigidBlockRecord, StopWhereNewtonHasNothingLeftToCorrect) {
   EXPECT_NEAR(s.phases[1].t_end, static_cast<double>(t1 + h), 4e-16);
 }
 
-TEST(RigidBlockRecord, RefusesWhatItDoesNotSolveYet) {
-  Model m = block(record({0, 1}, {1, 1}), 0.5);
-  m.stiffness = 1;
-  EXPECT_EQ(expect_invalid([&] { solve(m, 1.0); }).parameter(), "stiffness");
-  m.stiffness = 0;
-  m.amplitude = 1;
-  EXPECT_EQ(expect_invalid([&] { solve(m, 1.0); }).parameter(), "amplitude");
+// (A spring, damper or harmonic force with a record is the general family's:
+// test_general_record.cpp.)
+TEST(RigidBlockRecord, RefusesWhatItDoesNotSolve) {
   Model no_record;
   no_record.one_way = true;
   EXPECT_EQ(expect_invalid([&] { no_record.validate(); }).parameter(), "one_way");

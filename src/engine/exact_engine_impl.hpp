@@ -27,7 +27,7 @@ std::unique_ptr<EngineCore<Real>> make_engine_core(const BasicModel<Real>& model
                                                    const SolveOptions& options) {
   if (model.is_harmonic_coulomb())
     return std::make_unique<EventLoop<Real, HarmonicCoulombFamily<Real>>>(model, t_end, options);
-  if (model.ground_motion)
+  if (is_rigid_block_record(model))
     return std::make_unique<EventLoop<Real, RigidBlockRecordFamily<Real>>>(model, t_end, options);
   return std::make_unique<EventLoop<Real, LinearOscillatorFamily<Real>>>(model, t_end, options);
 }
@@ -37,7 +37,8 @@ std::unique_ptr<const PhaseFormula<Real>> make_phase_formula(const BasicModel<Re
                                                              const BasicPhase<Real>& phase) {
   if (model.is_harmonic_coulomb())
     return std::make_unique<HarmonicCoulombFormula<Real>>(model, phase);
-  if (model.ground_motion) return std::make_unique<RigidBlockRecordFormula<Real>>(model, phase);
+  if (is_rigid_block_record(model))
+    return std::make_unique<RigidBlockRecordFormula<Real>>(model, phase);
   return std::make_unique<LinearOscillatorFormula<Real>>(model, phase);
 }
 

@@ -1,11 +1,16 @@
 // The general family of phase laws (docs/theory.md 7): static friction
-// Rs >= R, spring, damper, force offset and several harmonics.
+// Rs >= R, spring, damper, force offset and several harmonics, and a ground
+// record with any of them (docs/theory.md 9.6; two-way: the one-way block is
+// the rigid block's, laws/rigid_block_record).
 //
 // A slip ends at the first zero of v, a stick at the first time |N| > Rs;
 // both are found by the certified search of numeric/first_zero.hpp on the
 // closed forms of slip_law.hpp and net_force.hpp, then polished by the scalar
 // type's root solver. At v = 0 the at-rest rule decides what follows, from N
 // and, within the time resolution of |N| = Rs, from the direction N moves.
+// With a record the closed forms hold on one of its segments (the record is
+// linear there): both searches walk the segments in order, carrying the
+// slip's state across each segment's end.
 #pragma once
 
 #include <algorithm>
@@ -39,9 +44,14 @@ class LinearOscillatorFamily {
     // A priori bounds (docs/theory.md 7.6): the energy m v^2 / 2 + k x^2 / 2
     // grows at most at rate |v| (F_max + R), so |v| <= sqrt(v0^2 + k x0^2 / m)
     // + (F_max + R) (t - t0) / m.
+    if (model.one_way)
+      throw InvalidInput("one_way", "true",
+                         "one-way sliding (Newmark's downslope block) is solved for the rigid "
+                         "block only: no spring, damper or harmonic force with --one-way");
     const Work m(model.mass);
     Work f_max = fabs(Work(model.force_offset)) + Work(model.amplitude);
     for (const auto& h : model.harmonics) f_max += fabs(Work(h.amplitude));
+    if (model.ground_motion) f_max += m * Work(model.ground_motion->pga());
     const Work v0(model.v0), x0(model.x0), k(model.stiffness);
     const Work span = Work(t_end) - Work(model.t0);
     MotionBounds<Work> bounds;
@@ -67,6 +77,9 @@ class LinearOscillatorFamily {
   SlipEnd<Work> slip_end(const PhaseStart<Work>& start);
 
  private:
+  // The first breakaway in (tau, to] with n as `net` gives it (one segment
+  // of the record, or the whole run without one).
+  Breakaway<Work> stick_end_on(const NetForce<Work>& net, const Work& tau, const Work& to);
   // What the at-rest rule says at v = 0: the direction of the slip that
   // follows (0: the mass stays), and whether a stick shorter than the
   // resolution was merged into it.
@@ -137,7 +150,7 @@ template <class Real>
 auto LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y,
                                            const ForceAtStop* at_stop) const -> AtRest {
   using std::fabs;
-  const NetForce<Work> net(o_, y);
+  const NetForce<Work> net(o_, y, o_.record().piece_at(tau));
   auto p = net.point(tau);
   const Work rs = o_.rs();
   Work excess = -p.gap;  // |N| - Rs
@@ -207,14 +220,40 @@ auto LinearOscillatorFamily<Real>::root_in(const ZeroBracket<Work>& bracket, con
 template <class Real>
 Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real>::stick_end(
     const Work& tau, const Work& x) {
-  using std::fabs;
   const Work y = o_.omega() * x;
-  const NetForce<Work> net(o_, y);
+  const RecordForcing<Work>& record = o_.record();
   Breakaway<Work> result;
-  if (!o_.forcing().oscillates()) {
+  if (!o_.forcing().oscillates() && !record.present()) {
     // n is constant: the at-rest rule already decided; it holds for ever.
     return result;
   }
+  // Segment by segment of the record (one piece without a record).
+  for (Work from = tau;;) {
+    const RecordPiece<Work> piece = record.piece_at(from);
+    if (from > tau) {
+      // A new segment: n turns there, or jumps (at the record's ends); the
+      // at-rest rule decides at its start as at any other instant.
+      const AtRest decision = at_rest(from, y);
+      if (decision.direction != 0) {
+        summary_->merged_sticks += decision.merged;
+        return {true, from, decision.direction};
+      }
+    }
+    const Work to = piece.end < tau_end_ ? piece.end : tau_end_;
+    if (o_.forcing().oscillates() || piece.slope != 0) {
+      result = stick_end_on(NetForce<Work>(o_, y, piece), from, to);
+      if (result.found) return result;
+    }
+    if (!(piece.end < tau_end_)) return result;
+    from = piece.end;
+  }
+}
+
+template <class Real>
+Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real>::stick_end_on(
+    const NetForce<Work>& net, const Work& tau, const Work& to) {
+  using std::fabs;
+  Breakaway<Work> result;
   // The search runs on f + E, E a bound of f's rounding error over the stick:
   // the mass breaks away only where |N| exceeds Rs by more than rounding (at
   // the time |N| crossed Rs); a tangency of |N| to Rs within rounding, as at
@@ -235,7 +274,7 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   });
   const Work res = Traits::time_resolution(tau);
   const ZeroBracket<Work> bracket =
-      Search::run(search, tau, search.jet(tau), tau_end_, res, res, step_budget(tau, tau_end_));
+      Search::run(search, tau, search.jet(tau), to, res, res, step_budget(tau, to));
   if (!bracket.found) return result;
   struct Cached {
     Work tau = std::numeric_limits<Work>::quiet_NaN();
@@ -275,7 +314,10 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   using std::fabs;
   using std::sqrt;
   const Work omega = o_.omega();
-  const LinearSlipLaw<Work> law(o_, start.sign, start.tau, omega * start.x, start.v);
+  // The law of the record's segment that holds the slip's current start
+  // (the whole slip without a record); replaced at each segment's end.
+  RecordPiece<Work> piece = o_.record().piece_at(start.tau);
+  LinearSlipLaw<Work> law(o_, start.sign, start.tau, omega * start.x, start.v, piece);
   // The points with error bounds, the last one kept: the search's first
   // step often lands where the noise level after a start was just taken
   // (one resolution on), and the stop's point is the bracket's end.
@@ -330,7 +372,8 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   const auto blind_after_rest = [this](const Jet<Work>& j, const Work& tau, const Work& y,
                                        const Work& res) {
     const Work level = 4 * j.e0;
-    const Work slope_noise = std::max(j.e1, NetForce<Work>(o_, y).point(tau).e_gap);
+    const Work slope_noise =
+        std::max(j.e1, NetForce<Work>(o_, y, o_.record().piece_at(tau)).point(tau).e_gap);
     Work stretch;
     if (j.d1 < 0 && -j.d1 <= slope_noise && j.d2 > 0) {
       stretch = (-j.d1 + sqrt(j.d1 * j.d1 + 2 * j.d2 * level)) / j.d2;
@@ -373,12 +416,35 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // driven by a harmonic: once a period).
   for (int touches = 0;; ++touches) {
     if (touches > 64) throw SearchStalled{};  // touch after touch without progress
-    if (blind > 0) at_from.f = 0;             // exactly: the slip starts (or goes on) from v = 0
+    if (!(from < piece.end) && piece.end < tau_end_) {
+      // The law's segment of the record is over: the next one's law, from
+      // the state there.
+      const auto q = law.point(from, false);
+      piece = o_.record().piece_at(from);
+      law = LinearSlipLaw<Work>(o_, start.sign, from, q.y, q.v, piece);
+      bounded.tau = cache.tau = std::numeric_limits<Work>::quiet_NaN();
+      at_from = law.jet(bounded_point(from));
+    }
+    if (blind > 0) at_from.f = 0;  // exactly: the slip starts (or goes on) from v = 0
     const Work res = Traits::time_resolution(from);
+    // The search ends at the horizon or at the end of the law's segment.
+    const Work to = piece.end < tau_end_ ? piece.end : tau_end_;
     ZeroBracket<Work> bracket;
-    if (from < tau_end_)
-      bracket =
-          Search::run(search, from, at_from, tau_end_, blind, res, step_budget(from, tau_end_));
+    if (from < to)
+      bracket = Search::run(search, from, at_from, to, blind, res, step_budget(from, to));
+    if (!bracket.found && to < tau_end_) {
+      const Jet<Work> at_to = law.jet(bounded_point(to));
+      if (at_to.f > 0) {
+        // v keeps its sign to the segment's end: the slip goes on under the
+        // next segment's law (at the loop's top).
+        from = to;
+        blind = 0;
+        touches = -1;  // progress: the loop's ++ starts the count again
+        continue;
+      }
+      // Within rounding of 0 there: the stop is at the segment's end.
+      bracket = {true, to, to, at_to, at_to};
+    }
     if (!bracket.found) {
       const auto q = law.point(tau_end_, false);
       result.stops = false;

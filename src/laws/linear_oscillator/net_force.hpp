@@ -6,7 +6,9 @@
 //
 // smooth, positive inside the band and zero exactly where |n| = rs, with
 // f' = -2 n n', f'' = -2 (n'^2 + n n''), f''' = -2 (3 n' n'' + n n''') and
-// |n^(k)| <= sum |a| q^k for k >= 1 (forcing.hpp).
+// |n^(k)| <= sum |a| q^k for k >= 1 (forcing.hpp), plus the record's slope
+// |d| for k = 1: with a ground record, n holds on one of its segments, where
+// the record's part is linear (record_forcing.hpp).
 //
 // The gap rs - |n| is also computed from the band's edge on n's side s,
 // (rs - s f0) + s rho^2 y - s h (h the harmonics), where that is sharper: with
@@ -35,8 +37,12 @@ class NetForce {
     Work gap = 0, e_gap = 0;  // rs - |n|, the sharper of its two forms
   };
 
-  NetForce(const Oscillator<Work>& oscillator, const Work& y)
-      : o_(&oscillator), offset_(oscillator.forcing().constant() - oscillator.rho2() * y) {
+  // `piece`: the record's segment the force is looked at on (none without a
+  // record).
+  NetForce(const Oscillator<Work>& oscillator, const Work& y, const RecordPiece<Work>& piece = {})
+      : o_(&oscillator),
+        offset_(oscillator.forcing().constant() - oscillator.rho2() * y),
+        piece_(piece) {
     using std::fabs;
     const Forcing<Work>& f = oscillator.forcing();
     mag_offset_ = fabs(oscillator.forcing().constant()) + oscillator.rho2() * fabs(y);
@@ -46,8 +52,8 @@ class NetForce {
       edge_[side] = oscillator.rs() - s * oscillator.forcing().constant();
       mag_edge_[side] = fabs(edge_[side]) + fabs(spring_);
     }
-    const Work n0 = fabs(offset_) + f.bound(0);
-    n0_ = n0;
+    record_max_ = piece.max_abs(piece.begin, piece.end);
+    n0_ = fabs(offset_) + f.bound(0) + record_max_;
   }
 
   Point point(const Work& tau) const {
@@ -75,6 +81,14 @@ class NetForce {
       phase_n += abs_a * arg;
       phase_d1 += abs_a * term.q * arg;
       phase_d2 += abs_a * q2 * arg;
+    }
+    if (piece_.slope != 0 || piece_.at_begin != 0) {
+      const Work record = piece_.value(tau);
+      p.n += record;
+      h += record;
+      p.d1 += piece_.slope;
+      mag_n += piece_.magnitude(tau);
+      mag_d1 += fabs(piece_.slope);
     }
     const Work k = kUlps * eps;
     p.e_n = k * mag_n + eps * phase_n;
@@ -116,17 +130,19 @@ class NetForce {
   // amplitude in N0 made the steps so short that the search hit its cap:
   // found by fuzzing).
   Work third_bound(const Jet<Work>& at, const Work& h) const {
+    using std::fabs;
     const Forcing<Work>& f = o_->forcing();
-    const Work local = at.tail + f.bound(1) * h;
+    const Work n1 = f.bound(1) + fabs(piece_.slope);
+    const Work local = at.tail + n1 * h;
     const Work n0 = local < n0_ ? local : n0_;
-    return 2 * (3 * f.bound(1) * f.bound(2) + n0 * f.bound(3)) *
+    return 2 * (3 * n1 * f.bound(2) + n0 * f.bound(3)) *
            (1 + 64 * std::numeric_limits<Work>::epsilon());
   }
 
-  // >= |n| everywhere: |f0 - rho^2 y| + sum |a|.
+  // >= |n| everywhere on the piece: |f0 - rho^2 y| + sum |a| + max |r_g|.
   Work magnitude_bound() const {
     using std::fabs;
-    return fabs(offset_) + o_->forcing().bound(0);
+    return fabs(offset_) + o_->forcing().bound(0) + record_max_;
   }
 
   // >= the rounding-error bound e0 of the jet of f wherever |n| is within
@@ -134,7 +150,7 @@ class NetForce {
   Work value_error_bound(const Work& tau_max) const {
     using std::fabs;
     const Work eps = std::numeric_limits<Work>::epsilon();
-    Work mag_n = mag_offset_, phase_n = 0;
+    Work mag_n = mag_offset_ + record_max_, phase_n = 0;
     for (const auto& term : o_->forcing().terms()) {
       mag_n += fabs(term.a);
       phase_n += fabs(term.a) * (term.q * tau_max + 2 * fabs(term.phase));
@@ -142,7 +158,7 @@ class NetForce {
     // The offset's part as sharp as the gap's form at a reachable edge
     // (point() above) allows.
     const Work rs = o_->rs();
-    const Work reach = o_->forcing().bound(0);
+    const Work reach = o_->forcing().bound(0) + record_max_;
     Work mag_offset = 0;
     bool reachable = false;
     for (int side = 0; side < 2; ++side) {
@@ -167,6 +183,8 @@ class NetForce {
   static constexpr int kUlps = 64;
   const Oscillator<Work>* o_;
   Work offset_;                // f0 - rho^2 y
+  RecordPiece<Work> piece_;    // the record's part on the segment looked at
+  Work record_max_ = 0;        // >= |r_g| on it
   Work mag_offset_;            // |f0| + rho^2 |y|
   Work spring_ = 0;            // rho^2 y
   Work edge_[2] = {0, 0};      // rs - s f0 for s = +1, -1

@@ -1,11 +1,12 @@
 // The general model in the engine's units (docs/theory.md 7.1): with
 // tau = w t, y = w x (so y' = v) and forces as velocity changes per radian,
 //
-//   slip of sign s:  y'' + 2 sigma y' + rho^2 y = g(tau) - s r,
-//   at rest:         n(tau) = g(tau) - rho^2 y,  stuck while |n| <= rs,
+//   slip of sign s:  y'' + 2 sigma y' + rho^2 y = g(tau) + r_g(tau) - s r,
+//   at rest:         n(tau) = g(tau) + r_g(tau) - rho^2 y,  stuck while |n| <= rs,
 //
 // sigma = c / (2 m w), rho^2 = k / (m w^2), r = R / (m w), rs = Rs / (m w),
-// g from forcing.hpp, and each harmonic's response from rest
+// g from forcing.hpp, r_g the ground record's part (record_forcing.hpp, linear
+// on each segment), and each harmonic's response from rest
 // (forced_response.hpp).
 #pragma once
 
@@ -16,6 +17,7 @@
 #include "frictionref/model.hpp"
 #include "laws/linear_oscillator/forced_response.hpp"
 #include "laws/linear_oscillator/forcing.hpp"
+#include "laws/linear_oscillator/record_forcing.hpp"
 #include "laws/linear_oscillator/transition.hpp"
 
 namespace frictionref::detail {
@@ -31,6 +33,7 @@ class Oscillator {
         r_(Work(model.friction) / (Work(model.mass) * Work(model.omega))),
         rs_(Work(model.static_limit()) / (Work(model.mass) * Work(model.omega))),
         forcing_(model),
+        record_(model.ground_motion, Work(model.omega)),
         transition_(sigma_, rho2_) {
     using std::fabs;
     using std::pow;
@@ -54,6 +57,8 @@ class Oscillator {
   const Work& r() const { return r_; }
   const Work& rs() const { return rs_; }
   const Forcing<Work>& forcing() const { return forcing_; }
+  // The ground record's part of the forcing (none: r_g = 0).
+  const RecordForcing<Work>& record() const { return record_; }
   // One per forcing term, in the same order.
   const std::vector<ForcedResponse<Work>>& responses() const { return responses_; }
   const TransitionFunctions<Work>& transition() const { return transition_; }
@@ -77,6 +82,7 @@ class Oscillator {
  private:
   Work omega_, sigma_, rho2_, r_, rs_;
   Forcing<Work> forcing_;
+  RecordForcing<Work> record_;
   TransitionFunctions<Work> transition_;
   std::vector<ForcedResponse<Work>> responses_;
   std::vector<Complex<Work>> steady_;

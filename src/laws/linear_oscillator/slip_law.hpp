@@ -4,21 +4,25 @@
 // (transition.hpp) and each harmonic's response from rest R_j
 // (forced_response.hpp), at u = tau - tau_a:
 //
-//   y(tau) = Phi11 y_a + G v_a + g0 G1 + sum_j Im(A_j R_j(u))
-//   v(tau) = -rho^2 G y_a + G' v_a + g0 G + sum_j Im(A_j R_j'(u))
+//   y(tau) = Phi11 y_a + G v_a + g0 G1 + d G2 + sum_j Im(A_j R_j(u))
+//   v(tau) = -rho^2 G y_a + G' v_a + g0 G + d G1 + sum_j Im(A_j R_j'(u))
 //
-// with g0 = f0 - s r and A_j = a_j e^{i theta_j(tau_a)}. Higher derivatives
+// with g0 = f0 + r_g(tau_a) - s r, d the slope of the ground record's part
+// r_g on its segment (record_forcing.hpp; the law holds up to the segment's
+// end) and A_j = a_j e^{i theta_j(tau_a)}. Higher derivatives
 // follow from the same closed forms. For the event search (first_zero.hpp)
 // the law also bounds |v'''| on [tau, tau + h] rigorously, by the smaller of:
 //  (A) w = v' solves w'' + 2 sigma w' + rho^2 w = g'', so S = sqrt(w'^2 +
 //      rho^2 w^2) grows at most at rate |g''| <= G2 = sum |a_j| q_j^2, and
 //      |v'''| = |g'' - 2 sigma w' - rho^2 w| <= G2 + (2 sigma + rho)(S(tau) + h G2)
-//      (good near resonance and for light damping);
+//      (good near resonance and for light damping; the record's ramp has
+//      r_g'' = 0 on the segment);
 //  (B) v''' = v_p''' + z_h' with v_p the steady response (|v_p'''| <= sum
 //      |a| |H| q^4) and z_h = v'' - v_p'' a free motion, whose energy
 //      rho^2 z_h^2 + z_h'^2 never grows, so |z_h'| stays below its value at
 //      tau (good for heavy damping, where (A)'s 2 sigma is huge; infinite at
-//      exact resonance).
+//      exact resonance). The ramp's steady response is linear in tau (v_p
+//      constant or linear), so it adds nothing to v_p'' and v_p'''.
 #pragma once
 
 #include <cmath>
@@ -45,12 +49,19 @@ class LinearSlipLaw {
     Work tail2 = 0;  // (B): sup of |z_h'| from tau on, plus rounding
   };
 
+  // `piece`: the record's segment that holds tau_a (none without a record);
+  // the law holds on [tau_a, piece.end].
   LinearSlipLaw(const Oscillator<Work>& oscillator, int sign, const Work& tau_a, const Work& y_a,
-                const Work& v_a)
-      : o_(&oscillator), s_(sign), tau_a_(tau_a), y_a_(y_a), v_a_(v_a) {
+                const Work& v_a, const RecordPiece<Work>& piece = {})
+      : o_(&oscillator), s_(sign), tau_a_(tau_a), y_a_(y_a), v_a_(v_a), ramp_(piece.slope) {
     using std::fabs;
     using std::sqrt;
-    g0_ = o_->forcing().constant() - Work(s_) * o_->r();
+    // g0's rounding: each operation's relative to its result, plus the
+    // record value's own (none without one: the bounds stay those of f0 - s r).
+    const Work f0 = o_->forcing().constant(), record = piece.value(tau_a);
+    g0_ = f0 + record - Work(s_) * o_->r();
+    mag_g0_ = fabs(g0_);
+    if (record != 0 || piece.slope != 0) mag_g0_ += fabs(f0 + record) + piece.magnitude(tau_a);
     rho_ = sqrt(o_->rho2());
     for (const ForcingTerm<Work>& f : o_->forcing().terms()) {
       const Work theta = f.q * tau_a + f.phase;
@@ -67,7 +78,7 @@ class LinearSlipLaw {
     // was taken for a touch within that noise).
     const Work eps = std::numeric_limits<Work>::epsilon();
     c1_ = g0_ - o_->rho2() * y_a_;
-    Work mag_c1 = fabs(g0_) + o_->rho2() * fabs(y_a_), phase_c1 = 0;
+    Work mag_c1 = mag_g0_ + o_->rho2() * fabs(y_a_), phase_c1 = 0;
     for (std::size_t i = 0; i < terms_.size(); ++i) {
       c1_ += terms_[i].a.im;
       mag_c1 += fabs(terms_[i].a.im);
@@ -166,23 +177,32 @@ class LinearSlipLaw {
     p.v = c1_ * t.g + t.dg * v_a_ + forced[0];
     p.d1 = c1_ * t.dg + g2 * v_a_ + forced[1];
     p.d2 = c1_ * g2 + g3 * v_a_ + forced[2];
+    // The record's ramp d u: d G2 in y, d G1 in v, d G in v', and so on.
+    const Work& d = ramp_;
+    if (d != 0) {
+      p.y += d * t.ramp;
+      p.v += d * t.g1;
+      p.d1 += d * t.g;
+      p.d2 += d * t.dg;
+    }
     if constexpr (!kBounds) return p;
-    p.d3 = c1_ * g3 + g4 * v_a_ + forced[3];
+    p.d3 = c1_ * g3 + g4 * v_a_ + forced[3] + d * g2;
     // Rounding: kUlps ulps of the sum of the terms' magnitudes, plus the
     // rounding of the harmonics' arguments (phase), plus c1's own error
     // times the G^(k) it multiplies (their values: the argument rounding of
     // G^(k) is in the magnitudes, times |c1|).
     const Work &mag_g2 = t.mag_g2, &mag_g3 = t.mag_g3, &mag_g4 = t.mag_g4;
-    const Work ay = fabs(y_a_), av = fabs(v_a_), a0 = fabs(g0_), ac = fabs(c1_);
+    const Work ay = fabs(y_a_), av = fabs(v_a_), a0 = mag_g0_, ac = fabs(c1_), ad = fabs(d);
     const Work k = kUlps * eps;
     const auto c1_error = [&](const Work& value, const Work& mag) {
       return e_c1_ * (fabs(value) + k * mag);
     };
-    const Work mag_y = t.mag_phi11 * ay + t.mag_g * av + a0 * t.mag_g1 + mag_forced_y;
-    const Work mag_v = ac * t.mag_g + t.mag_dg * av + mag_forced[0];
-    const Work mag_d1 = ac * t.mag_dg + mag_g2 * av + mag_forced[1];
-    const Work mag_d2 = ac * mag_g2 + mag_g3 * av + mag_forced[2];
-    const Work mag_d3 = ac * mag_g3 + mag_g4 * av + mag_forced[3];
+    const Work mag_y =
+        t.mag_phi11 * ay + t.mag_g * av + a0 * t.mag_g1 + ad * t.mag_ramp + mag_forced_y;
+    const Work mag_v = ac * t.mag_g + t.mag_dg * av + ad * t.mag_g1 + mag_forced[0];
+    const Work mag_d1 = ac * t.mag_dg + mag_g2 * av + ad * t.mag_g + mag_forced[1];
+    const Work mag_d2 = ac * mag_g2 + mag_g3 * av + ad * t.mag_dg + mag_forced[2];
+    const Work mag_d3 = ac * mag_g3 + mag_g4 * av + ad * mag_g2 + mag_forced[3];
     p.e_y = k * mag_y + eps * phase_y;
     p.e_v = k * mag_v + eps * phase[0] + c1_error(t.g, t.mag_g);
     p.e_d1 = k * mag_d1 + eps * phase[1] + c1_error(t.dg, t.mag_dg);
@@ -228,7 +248,9 @@ class LinearSlipLaw {
   const Oscillator<Work>* o_;
   int s_;
   Work tau_a_, y_a_, v_a_;
-  Work g0_ = 0;             // f0 - s r
+  Work ramp_ = 0;           // d: the record's slope on the law's segment
+  Work g0_ = 0;             // f0 + r_g(tau_a) - s r
+  Work mag_g0_ = 0;         // the magnitude of its terms
   Work c1_ = 0, e_c1_ = 0;  // g(tau_a) - s r - rho^2 y_a and its rounding bound
   Work rho_ = 0;
   std::vector<Term> terms_;

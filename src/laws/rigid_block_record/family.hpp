@@ -2,8 +2,8 @@
 // (docs/theory.md 9): m x'' = F0 - m a_g(t) - f, with a_g linear between the
 // record's samples; Coulomb friction R, static Rs >= R; two-way, or one-way
 // (Newmark's downslope block: no motion towards negative x). No spring,
-// damper or harmonic force (those models are refused for now, naming the
-// option).
+// damper or harmonic force: a record with those is the general family's
+// (laws/linear_oscillator, two-way).
 //
 // The net acceleration g = F0/m - a_g is linear on each segment
 // (net_acceleration.hpp), so every event is a root of a polynomial of degree
@@ -32,17 +32,26 @@
 
 namespace frictionref::detail {
 
-// Throws InvalidInput unless `model` is one the rigid-block laws solve: a
-// ground motion with no spring, damper or harmonic force.
+// True if the rigid-block laws solve `model`: a ground motion with no
+// spring, damper or harmonic force (harmonics of zero amplitude are none).
+template <class Real>
+bool is_rigid_block_record(const BasicModel<Real>& model) {
+  if (!model.ground_motion || model.stiffness != 0 || model.damping != 0 || model.amplitude != 0)
+    return false;
+  for (const auto& h : model.harmonics)
+    if (h.amplitude != 0) return false;
+  return true;
+}
+
+// Throws InvalidInput unless is_rigid_block_record(model).
 template <class Real>
 void require_rigid_block_record(const BasicModel<Real>& model) {
   const char* rule =
-      "a ground motion is solved for the rigid block so far (Newmark's block: no spring, damper "
-      "or harmonic force; give --stiffness 0 --damping 0 --amplitude 0 and no --harmonic)";
+      "is solved by the rigid-block laws only without a spring, damper or harmonic force";
   if (model.stiffness != 0) throw InvalidInput("stiffness", to_text(model.stiffness), rule);
   if (model.damping != 0) throw InvalidInput("damping", to_text(model.damping), rule);
   if (model.amplitude != 0) throw InvalidInput("amplitude", to_text(model.amplitude), rule);
-  if (!model.harmonics.empty()) throw InvalidInput("harmonics", "given", rule);
+  if (!is_rigid_block_record(model)) throw InvalidInput("harmonics", "given", rule);
 }
 
 template <class Real>

@@ -1,0 +1,82 @@
+// A ground record's part of the general model's forcing (docs/theory.md 9.6):
+// the record enters as the force -m a_g(t), in the engine's units
+//
+//   r(tau) = -a_g(tau / w) / w,
+//
+// linear on each of the record's segments (numbered as in
+// net_acceleration.hpp: the constant 0 before the first sample and from the
+// last on, where a_g jumps to and from 0). The closed forms of the slip and
+// the stick hold on one segment; the laws walk them in order.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <optional>
+
+#include "frictionref/ground_motion.hpp"
+#include "laws/rigid_block_record/net_acceleration.hpp"
+
+namespace frictionref::detail {
+
+// r on one segment: r(tau) = at_begin + slope (tau - begin), tau in [begin, end).
+template <class Work>
+struct RecordPiece {
+  Work begin = -std::numeric_limits<Work>::infinity();
+  Work end = std::numeric_limits<Work>::infinity();
+  Work at_begin = 0;
+  Work slope = 0;  // per unit of tau
+
+  Work value(const Work& tau) const {
+    if (slope == 0) return at_begin;
+    return at_begin + slope * (tau - begin);
+  }
+  // The magnitude value(tau)'s rounding is a few ulps of.
+  Work magnitude(const Work& tau) const {
+    using std::fabs;
+    if (slope == 0) return fabs(at_begin);
+    return fabs(at_begin) + fabs(slope * (tau - begin));
+  }
+  // >= |r| on [from, to] within the piece (r is linear: its ends decide).
+  Work max_abs(const Work& from, const Work& to) const {
+    using std::fabs;
+    const Work a = magnitude(from), b = magnitude(to);
+    return a > b ? a : b;
+  }
+};
+
+template <class Work>
+class RecordForcing {
+ public:
+  RecordForcing() = default;  // no record: r = 0
+  RecordForcing(std::shared_ptr<const GroundMotion> record, const Work& omega) : omega_(omega) {
+    if (record) {
+      peak_ = Work(record->pga()) / omega;
+      net_.emplace(std::move(record), omega, Work(0));
+    }
+  }
+
+  bool present() const { return net_.has_value(); }
+  // >= |r| everywhere.
+  const Work& peak() const { return peak_; }
+
+  // The segment that holds tau (the right one at a sample time).
+  RecordPiece<Work> piece_at(const Work& tau) const {
+    if (!net_) return {};
+    const auto s = net_->segment(net_->segment_at(tau));
+    RecordPiece<Work> piece;
+    piece.begin = s.begin;
+    piece.end = s.end;
+    piece.at_begin = s.at_begin / omega_;
+    piece.slope = s.slope / omega_;
+    return piece;
+  }
+
+ private:
+  std::optional<NetAcceleration<Work>> net_;
+  Work omega_ = 1;
+  Work peak_ = 0;
+};
+
+}  // namespace frictionref::detail

@@ -1,0 +1,202 @@
+// A ground record together with a spring, damper or harmonic force: the
+// general family's laws on each segment of the record (docs/theory.md 9.6).
+// Expected values come from closed forms evaluated here in long double, from
+// the rigid block's own laws (quadratic roots, another family) where the
+// general family meets a rigid block, and from the general engine's harmonic
+// forcing (no record) that a sampled sine approaches. The 50-digit reference
+// (tests/reference) checks the same models to 4 ulps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "expect_invalid.hpp"
+#include "frictionref/exact_engine.hpp"
+#include "frictionref/ground_motion.hpp"
+#include "frictionref/model.hpp"
+#include "solution_checks.hpp"
+
+namespace frictionref {
+namespace {
+
+using testing::expect_invalid;
+
+std::shared_ptr<const GroundMotion> record(std::vector<double> t, std::vector<double> a) {
+  auto r = std::make_shared<GroundMotion>();
+  r->t = std::move(t);
+  r->a = std::move(a);
+  r->file = "hand-made";
+  r->npts = r->t.size();
+  return r;
+}
+
+// Ulps of double between a and b.
+double ulps(double a, double b) {
+  return std::fabs(a - b) / std::ldexp(1.0, std::ilogb(std::max(std::fabs(a), 1e-300)) - 52);
+}
+
+// m = 1, k = 4 (natural frequency 2), R = Rs = 0 under a_g = 2 t on [0, 1),
+// then 0. Relative motion: x'' + 4 x = -2 t, so x = -t/2 + sin(2t)/4 (from
+// rest; v = (cos 2t - 1)/2 <= 0, zero only at t = 0 and pi); then the free
+// oscillation from (x1, v1) at t = 1. With R = 0 every zero of v is a
+// reversal (N = -k x != 0 there), at t_j = 1 + (phi + j pi) / 2 with
+// tan(phi) = v1 / (2 x1).
+TEST(GeneralRecord, SpringUnderARampMatchesTheClosedForm) {
+  Model m;
+  m.amplitude = 0;
+  m.stiffness = 4;
+  m.ground_motion = record({0, 1}, {0, 2});
+  const double t_end = 6;
+  const Solution s = solve(m, t_end);
+  testing::expect_well_formed(s, t_end);
+  const long double x1 = -0.5L + sinl(2.0L) / 4, v1 = (cosl(2.0L) - 1) / 2;
+  long double phi = atanl(v1 / (2 * x1));
+  if (phi < 0) phi += 3.14159265358979323846264338327950288L;
+  std::vector<long double> stops;
+  for (int j = 0;; ++j) {
+    const long double t = 1 + (phi + j * 3.14159265358979323846264338327950288L) / 2;
+    if (t >= t_end) break;
+    stops.push_back(t);
+  }
+  // The breakaway at t = 0 (N = -2 m t leaves 0 at once), one slip- to the
+  // first stop, then a reversal at each zero of v.
+  ASSERT_EQ(s.phases.size(), stops.size() + 1);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::slip_backward);
+  for (std::size_t j = 0; j < stops.size(); ++j) {
+    const Phase& p = s.phases[j];
+    SCOPED_TRACE("stop " + std::to_string(j));
+    EXPECT_LE(ulps(p.t_end, static_cast<double>(stops[j])), 4);
+    const long double u = stops[j] - 1;
+    const long double x = x1 * cosl(2 * u) + v1 / 2 * sinl(2 * u);
+    EXPECT_NEAR(p.x_end, static_cast<double>(x), 1e-15);
+    EXPECT_EQ(s.phases[j + 1].kind, p.kind == PhaseKind::slip_forward ? PhaseKind::slip_backward
+                                                                      : PhaseKind::slip_forward);
+  }
+  // Inside the ramp, dense output against x = -t/2 + sin(2t)/4.
+  for (const double t : {0.25, 0.5, 0.75, 0.999}) {
+    const long double x = -0.5L * t + sinl(2.0L * t) / 4;
+    EXPECT_NEAR(s.state_at(t).x, static_cast<double>(x), 1e-16) << "t = " << t;
+  }
+}
+
+// A damped spring driven by a record sampling a_g = -sin t at step h: the
+// record is the sine's linear interpolant, off by at most h^2 / 8, so the
+// motion must approach the general engine's harmonic forcing B sin t (no
+// record: one closed form per slip, no segments) as h^2.
+TEST(GeneralRecord, SampledSineConvergesToTheHarmonicForcing) {
+  const double t_end = 20 * M_PI;
+  for (const double lambda : {0.3, 0.6}) {
+    Model harmonic;
+    harmonic.friction = lambda;
+    harmonic.static_friction = 1.25 * lambda;
+    harmonic.stiffness = 0.5;
+    harmonic.damping = 0.1;
+    const Solution exact = solve(harmonic, t_end);
+    ASSERT_EQ(exact.summary.termination, Termination::reached_end);
+    double previous = 0;
+    for (const int per_period : {100, 200, 400}) {
+      const int n = 10 * per_period;
+      std::vector<double> t(n + 1), a(n + 1);
+      for (int i = 0; i <= n; ++i) {
+        t[i] = t_end * i / n;
+        a[i] = -std::sin(t[i]);
+      }
+      Model sampled_model = harmonic;
+      sampled_model.amplitude = 0;
+      sampled_model.ground_motion = record(t, a);
+      const Solution sampled = solve(sampled_model, t_end);
+      testing::expect_well_formed(sampled, t_end);
+      double error = 0;
+      for (int j = 1; j <= 40; ++j) {
+        const double tj = t_end * j / 40 * (1 - 1e-9);
+        error = std::max(error, std::fabs(sampled.state_at(tj).x - exact.state_at(tj).x));
+      }
+      const double h = 2 * M_PI / per_period;
+      SCOPED_TRACE("lambda " + std::to_string(lambda) + " h " + std::to_string(h));
+      EXPECT_LT(error, 10 * h * h);
+      if (previous > 0) {
+        EXPECT_LT(error, previous / 3);
+      }
+      previous = error;
+    }
+  }
+}
+
+// The general family on a rigid block (a damper of 1e-200, or a harmonic of
+// 1e-200: the same motion to far below rounding) against the rigid block's
+// own laws, whose stops are roots of quadratics: two methods, one answer, on
+// a record of noise.
+TEST(GeneralRecord, MeetsTheRigidBlockLawsOnARigidBlock) {
+  std::vector<double> t, a;
+  unsigned state = 12345;
+  for (int i = 0; i <= 400; ++i) {
+    state = state * 1103515245u + 12345u;
+    t.push_back(0.01 * i);
+    a.push_back(4.0 * ((state >> 8) % 2001 / 1000.0 - 1.0));
+  }
+  Model rigid;
+  rigid.amplitude = 0;
+  rigid.friction = 1;
+  rigid.static_friction = 1.2;
+  rigid.ground_motion = record(t, a);
+  const double t_end = 6;
+  const Solution reference = solve(rigid, t_end);
+  testing::expect_well_formed(reference, t_end);
+  ASSERT_GT(reference.phases.size(), 20u);
+  for (int variant = 0; variant < 2; ++variant) {
+    Model general = rigid;
+    if (variant == 0)
+      general.damping = 1e-200;
+    else
+      general.harmonics.push_back({1e-200, 3.0, 0.0});
+    const Solution s = solve(general, t_end);
+    SCOPED_TRACE(variant == 0 ? "damper" : "harmonic");
+    testing::expect_well_formed(s, t_end);
+    ASSERT_EQ(s.phases.size(), reference.phases.size());
+    double worst = 0;
+    for (std::size_t i = 0; i < s.phases.size(); ++i) {
+      EXPECT_EQ(s.phases[i].kind, reference.phases[i].kind) << "phase " << i;
+      worst = std::max(worst, ulps(s.phases[i].t_end, reference.phases[i].t_end));
+      EXPECT_NEAR(s.phases[i].x_end, reference.phases[i].x_end,
+                  1e-14 * (1 + std::fabs(reference.phases[i].x_end)))
+          << "phase " << i;
+    }
+    EXPECT_LE(worst, 4) << "largest event-time difference, ulps";
+  }
+}
+
+// At the record's first sample a_g jumps from 0 to -3: N = 3 > Rs = 2 breaks
+// the mass away at exactly t = 1 (the segment's start), with a spring.
+TEST(GeneralRecord, JumpAtTheFirstSampleBreaksAwayAtIt) {
+  Model m;
+  m.amplitude = 0;
+  m.friction = 1;
+  m.static_friction = 2;
+  m.stiffness = 1;
+  m.ground_motion = record({1, 2}, {-3, -3});
+  const Solution s = solve(m, 5.0);
+  testing::expect_well_formed(s, 5.0);
+  ASSERT_GE(s.phases.size(), 2u);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::stick);
+  EXPECT_EQ(s.phases[0].t_end, 1.0);
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::slip_forward);
+  // x'' + x = 3 - 1 from rest at t = 1: x = 2 (1 - cos(t - 1)), v = 2 sin(t - 1),
+  // until a_g jumps back to 0 at t = 2 (v > 0 there).
+  const double x2 = 2 * (1 - std::cos(1.0));
+  EXPECT_NEAR(s.state_at(1.5).x, 2 * (1 - std::cos(0.5)), 1e-15);
+  EXPECT_NEAR(s.state_at(2.0).x, x2, 1e-15);
+}
+
+TEST(GeneralRecord, OneWayStaysTheRigidBlocks) {
+  Model m;
+  m.amplitude = 0;
+  m.friction = 0.5;
+  m.stiffness = 1;
+  m.one_way = true;
+  m.ground_motion = record({0, 1}, {1, 1});
+  EXPECT_EQ(expect_invalid([&] { solve(m, 1.0); }).parameter(), "one_way");
+}
+
+}  // namespace
+}  // namespace frictionref
