@@ -2,6 +2,7 @@
 // for the method and why it is independent of the engine).
 #include "general_reference_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -25,6 +26,8 @@ const Real kTheta = Real(1) / 2;
 const Real kSeriesCut("1e-64");
 constexpr std::size_t kMinDegree = 12;
 constexpr std::size_t kMaxDegree = 400;
+// The tail majorant starts at N = D - 1 and needs phi_n free of F_0, F_1.
+static_assert(kMinDegree >= 4, "the tail majorant needs N = D - 1 >= 2");
 
 [[noreturn]] void fail(const std::string& what, const Real& t) {
   std::ostringstream text;
@@ -43,6 +46,20 @@ Real term_norm(const RealInput& in, int power) {
   return sum;
 }
 
+// F without the record's term, F0 + sum a_j sin(q_j t + p_j), and its rate.
+Real oscillating_force(const RealInput& in, const Real& t) {
+  Real sum = in.force_offset;
+  for (const RealTerm& term : in.terms) sum += term.amplitude * sin(term.omega * t + term.phase);
+  return sum;
+}
+
+Real oscillating_rate(const RealInput& in, const Real& t) {
+  Real sum = 0;
+  for (const RealTerm& term : in.terms)
+    sum += term.amplitude * term.omega * cos(term.omega * t + term.phase);
+  return sum;
+}
+
 Real highest_frequency(const RealInput& in) {
   Real w = 0;
   for (const RealTerm& term : in.terms)
@@ -53,8 +70,11 @@ Real highest_frequency(const RealInput& in) {
 // The Taylor expansion of x on [t_a, t_a + h] in a slip of sign s:
 //   m x'' + c x' + k x = F(t) - s R,   x(t_a + u) = sum_n X_n u^n,
 //   (n + 2)(n + 1) m X_{n+2} = F_n - [n = 0] s R - c (n + 1) X_{n+1} - k X_n,
-// F_n the Taylor coefficients of F at t_a (those of sin and cos). The tail
-// past degree D is bounded by a majorant of the recurrence (tail_bound_).
+// F_n the Taylor coefficients of F at t_a: those of sin and cos, plus F0 and
+// the record's line -m (a_g(t_a) + a_g' u) in F_0 and F_1. The caller keeps
+// [t_a, t_a + h) inside one segment of the record (h ends at most at the next
+// sample), so that line is F's record term on the whole step. The tail past
+// degree D is bounded by a majorant of the recurrence (tail_bound_).
 class SlipSeries {
  public:
   SlipSeries(const RealInput& in, int s, const Real& t_a, const Real& x_a, const Real& v_a,
@@ -67,7 +87,10 @@ class SlipSeries {
     // sin, cos, -sin, -cos times that).
     const std::size_t terms = in.terms.size();
     std::vector<Real> scale(terms), sin_phase(terms), cos_phase(terms);
-    Real forcing_now = in.force_offset - Real(s) * in.friction;
+    const std::size_t segment = in.segment(t_a);
+    const Real forcing_now = in.force_offset - Real(s) * in.friction -
+                             in.mass * in.ground_acceleration(segment, t_a);
+    const Real forcing_rate = -in.mass * in.ground_slope(segment);
     for (std::size_t j = 0; j < terms; ++j) {
       const RealTerm& term = in.terms[j];
       const Real phase = term.omega * t_a + term.phase;
@@ -80,7 +103,7 @@ class SlipSeries {
     Real largest = abs(v_a) * h;  // max |X_n| h^n over n >= 1
     Real h_power = h;             // h^(n+1) for the coefficient being made
     for (std::size_t n = 0;; ++n) {
-      Real forcing = n == 0 ? forcing_now : Real(0);
+      Real forcing = n == 0 ? forcing_now : n == 1 ? forcing_rate : Real(0);
       for (std::size_t j = 0; j < terms; ++j) {
         switch (n % 4) {
           case 0: forcing += scale[j] * sin_phase[j]; break;
@@ -144,7 +167,8 @@ class SlipSeries {
 
  private:
   // With Y_n = |X_n| h^n, alpha = c/m, beta = k/m, G = sum |a_j| / m,
-  // W = max q_j, for n >= 1:
+  // W = max q_j, for n >= 2 (F_0 and F_1 also hold F0, -s R and the record's
+  // line, which this bound does not need: it is only used from n = N >= 11 on):
   //   Y_{n+2} <= phi_n + rho_n max(Y_{n+1}, Y_n),
   //   rho_n = alpha h / (n + 2) + beta h^2 / ((n + 2)(n + 1)),
   //   phi_n = G h^2 (W h)^n / (n + 2)!.
@@ -255,7 +279,8 @@ class Solver {
     stick_step_ = W > 0 ? Real(options.step_fraction / W) : Real(t_end - model.t0);
     force_curvature_ = term_norm(in_, 2);
     force_rate_max_ = term_norm(in_, 1);
-    forced_ = W > 0;
+    oscillating_ = W > 0;
+    forced_ = oscillating_ || !in_.record_t.empty();
   }
 
   Result run() {
@@ -284,6 +309,18 @@ class Solver {
   }
 
   Real net_force(const Real& t, const Real& x) const { return in_.force(t) - in_.stiffness * x; }
+
+  // The same with the record's segment k's line (at its right end: the left
+  // limit), and F' there.
+  Real net_force_on(std::size_t k, const Real& t, const Real& x) const {
+    return oscillating_force(in_, t) - in_.mass * in_.ground_acceleration(k, t) -
+           in_.stiffness * x;
+  }
+  Real force_rate_on(std::size_t k, const Real& t) const {
+    return oscillating_rate(in_, t) - in_.mass * in_.ground_slope(k);
+  }
+
+  std::size_t segments_end() const { return in_.record_t.size(); }  // the last segment, n
 
   // At rest at t: slip at once if |N| > Rs (or |N| = Rs with N moving
   // outward), else stick. Iterates over the whole run (slip and stick call
@@ -319,6 +356,14 @@ class Solver {
 
   // A stick from t_a at position x. Returns false if it runs to the horizon,
   // else the breakaway time and direction.
+  //
+  // Segment by segment of the record (a single one without a record): on
+  // segment k, g = Rs - |N| is evaluated with that segment's line up to the
+  // left limit at its end, so g is the minimum of two C^2 functions there and
+  // the chord test's |g''| <= sum |a_j| q_j^2 holds (a line has no curvature).
+  // At the start of each later segment (a sample time) the right limit is
+  // checked first: past Rs there (a jump at t_0 or t_{n-1}), or on Rs and
+  // moving outward, the stick ends at that sample time.
   bool stick(Start start, const Real& t_a, const Real& x, Real& t_break, int& direction) {
     Phase p;
     p.kind = Kind::stick;
@@ -328,64 +373,91 @@ class Solver {
     if (!forced_) return stick_to_horizon(p);  // N constant: the rule at t_a holds for ever
 
     const Real& Rs = in_.static_friction;
-    auto g = [&](const Real& t) {
-      ++result_.evaluations;
-      return Rs - abs(net_force(t, x));
-    };
-    // g = min(Rs - N, Rs + N): the chord test holds for the minimum of two
-    // functions with |g''| <= sum |a_j| q_j^2 (each lies above its chord).
     const Real& M = force_curvature_;
+    const std::size_t n = segments_end();
     Real u = t_a;
-    Real gu = g(u);
-    // A stick starting on the band's edge (|N| = Rs, N moving inward):
-    // a zone free of zeros from the Taylor bound of the branch at the edge,
-    // Rs - dir N >= g0 + g1 d - M d^2 / 2, and of the other branch,
-    // Rs + dir N >= Rs + |N| - max|N'| d.
-    if (!(gu > M * stick_step_ * stick_step_ / 8)) {
-      const Real N = net_force(u, x);
-      const int edge = N >= 0 ? 1 : -1;
-      const Real g1 = -Real(edge) * in_.force_rate(u);
-      if (gu < 0) fail("stick with |N| > Rs", u);
-      if (g1 > 0) {
-        Real d = (g1 + sqrt(g1 * g1 + 2 * M * gu)) / (M == 0 ? Real(1) : M) / 2;
-        const Real other = Rs + abs(N);
-        if (force_rate_max_ > 0 && other / (2 * force_rate_max_) < d)
-          d = other / (2 * force_rate_max_);
-        if (d > stick_step_) d = stick_step_;
-        u = t_a + d;
-        gu = g(u);
-      } else if (gu == 0) {
-        fail("stick on the band's edge with N not moving inward", u);
+    for (std::size_t k = in_.segment(t_a);; ++k) {
+      if (!(u < t_end_)) return stick_to_horizon(p);
+      // [u, stop]: segment k's part still to scan (k = n: to the horizon).
+      const Real stop = k < n && in_.record_t[k] < t_end_ ? in_.record_t[k] : t_end_;
+      auto g = [&](const Real& t) {
+        ++result_.evaluations;
+        return Rs - abs(net_force_on(k, t, x));
+      };
+      Real gu = g(u);
+      const Real N_u = net_force_on(k, u, x);
+      const Real rate_u = force_rate_on(k, u);
+      if (u > t_a) {
+        // The right limit at the sample u (at_rest has checked it at t_a).
+        const bool outward = gu == 0 && (N_u != 0 ? N_u * rate_u > 0 : rate_u != 0);
+        if (gu < 0 || outward)
+          return break_away(p, u, N_u, rate_u, true, t_break, direction);
       }
-    }
-    Real root = 0;
-    bool found = false;
-    while (u < t_end_) {
-      Real w = u + stick_step_;
-      if (w > t_end_) w = t_end_;
-      const Real gw = g(w);
-      if (first_zero(g, M, Real(0), resolution(u), u, w, gu, gw, root,
-                     result_.unresolved_points)) {
-        found = true;
-        break;
+      if (!oscillating_ && in_.ground_slope(k) == 0) {
+        // N constant on the segment (no harmonic, a_g constant): g(u) >= 0 holds on it.
+        if (gu < 0) fail("stick with |N| > Rs", u);
+        u = stop;
+        continue;
       }
-      u = w;
-      gu = gw;
+      // A segment starting on the band's edge (|N| = Rs, N moving inward):
+      // a zone free of zeros from the Taylor bound of the branch at the edge,
+      // Rs - dir N >= g0 + g1 d - M d^2 / 2, and of the other branch,
+      // Rs + dir N >= Rs + |N| - max|N'| d (max|N'| on this segment).
+      if (!(gu > M * stick_step_ * stick_step_ / 8)) {
+        const int edge = N_u >= 0 ? 1 : -1;
+        const Real g1 = -Real(edge) * rate_u;
+        if (gu < 0) fail("stick with |N| > Rs", u);
+        if (g1 > 0) {
+          Real d = (g1 + sqrt(g1 * g1 + 2 * M * gu)) / (M == 0 ? Real(1) : M) / 2;
+          const Real other = Rs + abs(N_u);
+          const Real rate_max = force_rate_max_ + in_.mass * abs(in_.ground_slope(k));
+          if (rate_max > 0 && other / (2 * rate_max) < d) d = other / (2 * rate_max);
+          if (d > stick_step_) d = stick_step_;
+          u = d < stop - u ? Real(u + d) : stop;
+          gu = g(u);
+        } else if (gu == 0) {
+          fail("stick on the band's edge with N not moving inward", u);
+        }
+      }
+      while (u < stop) {
+        Real w = u + stick_step_;
+        if (w > stop) w = stop;
+        const Real gw = g(w);
+        Real root = 0;
+        if (first_zero(g, M, Real(0), resolution(u), u, w, gu, gw, root,
+                       result_.unresolved_points)) {
+          if (root >= t_end_) return stick_to_horizon(p);
+          return break_away(p, root, net_force_on(k, root, x), force_rate_on(k, root), false,
+                            t_break, direction);
+        }
+        u = w;
+        gu = gw;
+      }
+      u = stop;
     }
-    if (!found || root >= t_end_) return stick_to_horizon(p);
-    const Real N = net_force(root, x);
-    const Real rate = in_.force_rate(root);
-    // Rs = 0: N crosses 0 and leaves in the direction it moves.
-    direction = abs(N) * 2 > Rs ? (N > 0 ? 1 : -1) : (rate > 0 ? 1 : -1);
-    p.t_end = root;
+  }
+
+  // The end of a stick at t with N and N' there (at a record jump: the right
+  // limits); the slip's direction is N's, or N''s for N = 0 (Rs = 0).
+  bool break_away(Phase& p, const Real& t, const Real& N, const Real& rate, bool jump,
+                  Real& t_break, int& direction) {
+    const Real& Rs = in_.static_friction;
+    if (jump)
+      direction = N > 0 ? 1 : N < 0 ? -1 : (rate > 0 ? 1 : -1);
+    else  // Rs = 0: N crosses 0 and leaves in the direction it moves.
+      direction = abs(N) * 2 > Rs ? (N > 0 ? 1 : -1) : (rate > 0 ? 1 : -1);
+    p.t_end = t;
     p.net_force_end = N;
     p.net_force_rate_end = rate;
-    p.net_force_curvature_end = force_second_derivative(root);
+    p.net_force_curvature_end = force_second_derivative(t);
+    p.at_record_jump = jump;
     result_.phases.push_back(p);
-    t_break = root;
+    t_break = t;
+    breakaway_at_jump_ = jump;
     return true;
   }
 
+  // F'' (the record's lines add nothing inside a segment).
   Real force_second_derivative(const Real& t) const {
     Real sum = 0;
     for (const RealTerm& term : in_.terms)
@@ -416,6 +488,11 @@ class Solver {
     for (;;) {
       Real h = slip_step_;
       if (t + h > t_end_) h = t_end_ - t;
+      // Never across a sample of the record: [t, t + h) within one segment
+      // (record_t[k] is the first sample after t).
+      const std::size_t k = in_.segment(t);
+      const bool to_sample = k < segments_end() && in_.record_t[k] - t <= h;
+      if (to_sample) h = in_.record_t[k] - t;
       const SlipSeries series(in_, s, t, x, v, h);
       ++result_.series_steps;
       if (series.degree() > result_.max_degree) result_.max_degree = series.degree();
@@ -431,8 +508,10 @@ class Solver {
       Real u = 0;
       if (first) {
         Real f1 = sign * series.derivative(2, 0);
-        // At a breakaway |N| = Rs exactly: s v' = (Rs - R) / m there.
-        if (start == Start::breakaway) f1 = (in_.static_friction - in_.friction) / in_.mass;
+        // At a breakaway |N| = Rs exactly: s v' = (Rs - R) / m there (not at a
+        // record jump: |N| > Rs there, the series' value is right).
+        if (start == Start::breakaway && !breakaway_at_jump_)
+          f1 = (in_.static_friction - in_.friction) / in_.mass;
         p.slope_begin = f1;
         if (v_a == 0) {
           const Real f2 = sign * series.derivative(3, 0);
@@ -468,7 +547,7 @@ class Solver {
       if (abs(v) > p.speed_max) p.speed_max = abs(v);
       x = series.derivative(0, h);
       v = v_next;
-      t = t + h;
+      t = to_sample ? in_.record_t[k] : Real(t + h);  // exactly on the sample
       if (t >= t_end_) {
         p.t_end = t_end_;
         p.x_end = x;
@@ -484,7 +563,9 @@ class Solver {
   Options options_;
   Result result_;
   Real t_end_, slip_step_, stick_step_, force_curvature_, force_rate_max_;
-  bool forced_ = false;
+  bool oscillating_ = false;        // a harmonic with a_j != 0
+  bool forced_ = false;             // N can change in a stick: a harmonic or a record
+  bool breakaway_at_jump_ = false;  // the last stick ended at a record jump
 };
 
 void check_input(const RealInput& in, const Real& t_end) {
@@ -498,8 +579,15 @@ void check_input(const RealInput& in, const Real& t_end) {
     fields.push_back(&term.omega);
     fields.push_back(&term.phase);
   }
+  for (const Real& t : in.record_t) fields.push_back(&t);
+  for (const Real& a : in.record_a) fields.push_back(&a);
   for (const Real* f : fields)
     if (!isfinite(*f)) throw std::invalid_argument("general reference: non-finite input");
+  if (in.record_t.size() != in.record_a.size() || in.record_t.size() == 1)
+    throw std::invalid_argument("general reference: a record needs n >= 2 times and accelerations");
+  for (std::size_t i = 1; i < in.record_t.size(); ++i)
+    if (!(in.record_t[i] > in.record_t[i - 1]))
+      throw std::invalid_argument("general reference: record times must increase strictly");
   if (!(in.mass > 0) || in.friction < 0 || in.static_friction < in.friction ||
       in.stiffness < 0 || in.damping < 0)
     throw std::invalid_argument("general reference: need m > 0, 0 <= R <= Rs, k >= 0, c >= 0");
@@ -511,16 +599,27 @@ void check_input(const RealInput& in, const Real& t_end) {
 }  // namespace
 
 Real RealInput::force(const Real& t) const {
-  Real sum = force_offset;
-  for (const RealTerm& term : terms) sum += term.amplitude * sin(term.omega * t + term.phase);
-  return sum;
+  return oscillating_force(*this, t) - mass * ground_acceleration(t);
 }
 
 Real RealInput::force_rate(const Real& t) const {
-  Real sum = 0;
-  for (const RealTerm& term : terms)
-    sum += term.amplitude * term.omega * cos(term.omega * t + term.phase);
-  return sum;
+  return oscillating_rate(*this, t) - mass * ground_slope(segment(t));
+}
+
+std::size_t RealInput::segment(const Real& t) const {
+  // The number of samples at or before t.
+  return static_cast<std::size_t>(std::upper_bound(record_t.begin(), record_t.end(), t) -
+                                  record_t.begin());
+}
+
+Real RealInput::ground_acceleration(std::size_t k, const Real& t) const {
+  if (k == 0 || k >= record_t.size()) return 0;
+  return record_a[k - 1] + ground_slope(k) * (t - record_t[k - 1]);
+}
+
+Real RealInput::ground_slope(std::size_t k) const {
+  if (k == 0 || k >= record_t.size()) return 0;
+  return (record_a[k] - record_a[k - 1]) / (record_t[k] - record_t[k - 1]);
 }
 
 std::string Input::describe() const {
@@ -530,6 +629,9 @@ std::string Input::describe() const {
        << " c=" << damping << " F0=" << force_offset;
   for (const Harmonic& h : harmonics)
     text << " +" << h.amplitude << "sin(" << h.omega << "t+" << h.phase << ")";
+  if (!record_t.empty())
+    text << " record=" << record_t.size() << " samples on [" << record_t.front() << ","
+         << record_t.back() << "]";
   text << " x0=" << x0 << " v0=" << v0 << " t0=" << t0;
   return text.str();
 }
@@ -545,6 +647,8 @@ RealInput RealInput::from_double(const Input& in) {
   r.terms.push_back({Real(in.amplitude), Real(in.omega), Real(0)});
   for (const Harmonic& h : in.harmonics)
     r.terms.push_back({Real(h.amplitude), Real(h.omega), Real(h.phase)});
+  for (const double t : in.record_t) r.record_t.push_back(Real(t));
+  for (const double a : in.record_a) r.record_a.push_back(Real(a));
   r.x0 = Real(in.x0);
   r.v0 = Real(in.v0);
   r.t0 = Real(in.t0);

@@ -26,11 +26,13 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "frictionref/exact_engine.hpp"
+#include "frictionref/ground_motion.hpp"
 #include "frictionref/model.hpp"
 #include "frictionref/multiprecision.hpp"
 #include "general_reference_solver.hpp"
@@ -38,14 +40,14 @@
 namespace {
 
 namespace gref = frictionref_general_reference;
+using boost::multiprecision::abs;
+using boost::multiprecision::sqrt;
 using frictionref::Model;
 using frictionref::PhaseKind;
 using gref::Real;
-using boost::multiprecision::abs;
-using boost::multiprecision::sqrt;
 
-constexpr double kUlpLimit = 4;         // well-conditioned events: |error| <= 4 ulps of t
-constexpr double kConditioned = 1e-3;   // the well-conditioned threshold (header comment)
+constexpr double kUlpLimit = 4;        // well-conditioned events: |error| <= 4 ulps of t
+constexpr double kConditioned = 1e-3;  // the well-conditioned threshold (header comment)
 // The near-grazing bound (docs/accuracy.md): the engine evaluates v (and N) in
 // long double with a certified rounding bound e0 of 64 ulps of the sum of the
 // magnitudes it adds (slip_law.hpp, net_force.hpp), and counts a value within
@@ -69,6 +71,10 @@ gref::Input to_reference_input(const Model& m) {
   in.damping = m.damping;
   in.force_offset = m.force_offset;
   for (const auto& h : m.harmonics) in.harmonics.push_back({h.amplitude, h.omega, h.phase});
+  if (m.ground_motion) {
+    in.record_t = m.ground_motion->t;
+    in.record_a = m.ground_motion->a;
+  }
   in.x0 = m.x0;
   in.v0 = m.v0;
   in.t0 = m.t0;
@@ -144,15 +150,30 @@ struct Carried {
 std::vector<Conditioning> conditioning(const gref::Result& r) {
   const gref::RealInput& in = r.model;
   const Real eps(kEpsWork);
-  Real x_max = abs(in.x0);
+  Real x_max = abs(in.x0), record_peak = 0;
   for (const gref::Phase& p : r.phases) x_max = std::max(x_max, Real(abs(p.x_end)));
   Real amplitudes = 0, rate_max = 0;
   for (const gref::RealTerm& term : in.terms) {
     amplitudes += abs(term.amplitude);
     rate_max += abs(term.amplitude) * term.omega;
   }
-  const Real force_scale = abs(in.force_offset) + amplitudes + in.static_friction +
-                           in.stiffness * x_max;
+  // A record: its force m max|a_g| counts as an amplitude, m max|a_g'| as a
+  // rate (its rounding in the engine: the value on a segment at the rounded
+  // time, m |a_g'| eps |t|, like a harmonic's argument).
+  Real record_slope = 0;
+  for (std::size_t i = 0; i < in.record_a.size(); ++i) {
+    const Real a = in.mass * abs(in.record_a[i]);
+    if (a > record_peak) record_peak = a;
+    if (i + 1 < in.record_a.size()) {
+      const Real slope = in.mass * abs(in.record_a[i + 1] - in.record_a[i]) /
+                         (in.record_t[i + 1] - in.record_t[i]);
+      if (slope > record_slope) record_slope = slope;
+    }
+  }
+  amplitudes += record_peak;
+  rate_max += record_slope;
+  const Real force_scale =
+      abs(in.force_offset) + amplitudes + in.static_friction + in.stiffness * x_max;
   const Real wn = sqrt(in.stiffness / in.mass);
   std::vector<Conditioning> out(r.phases.size());
   // The whole bound, and the part of it that comes from near-grazing events
@@ -166,6 +187,7 @@ std::vector<Conditioning> conditioning(const gref::Result& r) {
     Real phase_rounding = 0;
     for (const gref::RealTerm& term : in.terms)
       phase_rounding += abs(term.amplitude) * eps * term.omega * abs(p.t_end);
+    phase_rounding += record_slope * eps * abs(p.t_end);
     Real own = 0, A = 0, q = 0, span = 0, A_a = 0;
     if (p.kind == gref::Kind::stick) {
       // N = F(t) - k x_r reaches +-Rs with slope F'(t).
@@ -184,10 +206,10 @@ std::vector<Conditioning> conditioning(const gref::Result& r) {
       q = abs(p.curvature_end);
       A_a = abs(p.slope_begin);
       span = p.t_end - p.t_begin;
-      const Real forces = abs(in.force_offset) + in.friction + amplitudes +
-                          in.stiffness * x_max + in.damping * p.speed_max;
-      const Real S = abs(p.v_begin) + p.speed_max + forces * span / in.mass +
-                     A * abs(p.t_end) + A_a * abs(p.t_begin);
+      const Real forces = abs(in.force_offset) + in.friction + amplitudes + in.stiffness * x_max +
+                          in.damping * p.speed_max;
+      const Real S = abs(p.v_begin) + p.speed_max + forces * span / in.mass + A * abs(p.t_end) +
+                     A_a * abs(p.t_begin);
       own = Real(kEvalError) * eps * S + phase_rounding * span / in.mass;
       c.ratio = static_cast<double>(A * in.mass / force_scale);
       c.near_grazing = A * in.mass < Real(kConditioned) * force_scale;
@@ -249,7 +271,9 @@ std::vector<Span> normalize(const std::vector<Span>& raw, double omega,
 
 enum class EventKind { stop_to_stick, reversal, breakaway };
 const char* to_string(EventKind k) {
-  return k == EventKind::stop_to_stick ? "stop" : k == EventKind::reversal ? "reversal" : "breakaway";
+  return k == EventKind::stop_to_stick ? "stop"
+         : k == EventKind::reversal    ? "reversal"
+                                       : "breakaway";
 }
 
 struct Event {
@@ -297,8 +321,8 @@ CaseResult compare(const Model& model, double t_end, const gref::Options& option
   std::vector<std::pair<Real, Real>> windows;
   for (std::size_t j = 0; j + 1 < reference.phases.size(); ++j)
     if (!cond[j].resolvable)
-      windows.push_back({reference.phases[j].t_end - cond[j].delta,
-                         reference.phases[j].t_end + cond[j].delta});
+      windows.push_back(
+          {reference.phases[j].t_end - cond[j].delta, reference.phases[j].t_end + cond[j].delta});
   result.windows = windows.size();
 
   std::vector<Span> raw_engine, raw_reference;
@@ -339,7 +363,7 @@ CaseResult compare(const Model& model, double t_end, const gref::Options& option
   for (std::size_t i = 0; i + 1 < first_difference; ++i) {
     Event ev;
     ev.index = i;
-    ev.kind = r[i].kind == 0 ? EventKind::breakaway
+    ev.kind = r[i].kind == 0       ? EventKind::breakaway
               : r[i + 1].kind == 0 ? EventKind::stop_to_stick
                                    : EventKind::reversal;
     ev.t_engine = static_cast<double>(e[i].t_end);
@@ -360,9 +384,11 @@ CaseResult compare(const Model& model, double t_end, const gref::Options& option
 std::string event_line(const Event& e) {
   std::ostringstream text;
   text << "event " << e.index << " (" << to_string(e.kind)
-       << (e.near_grazing ? ", near-grazing" : e.well_conditioned ? "" : ", after a near-grazing one") << "): engine t = " << format(e.t_engine)
-       << ", reference t = " << e.t_reference.str(25) << ", error = " << format(e.error_ulps, 4)
-       << " ulps, slope/scale = " << format(e.ratio, 3)
+       << (e.near_grazing       ? ", near-grazing"
+           : e.well_conditioned ? ""
+                                : ", after a near-grazing one")
+       << "): engine t = " << format(e.t_engine) << ", reference t = " << e.t_reference.str(25)
+       << ", error = " << format(e.error_ulps, 4) << " ulps, slope/scale = " << format(e.ratio, 3)
        << ", bound = " << format(e.bound_ulps, 4) << " ulps"
        << (e.resolvable ? "" : " (unresolvable in long double)");
   return text.str();
@@ -615,6 +641,53 @@ TEST(GeneralEventAccuracy, SeveralHarmonics) {
 
 // Other units and starts: m = 2.5, B = 3, w = 0.7, non-zero v0, x0, t0,
 // everything at once.
+// A ground record (linear between samples, zero outside them: a jump at its
+// first and last sample) with a spring, damper, static friction and a
+// harmonic force: the engine walks the record's segments with the general
+// laws (docs/theory.md 9.6); the reference's Taylor steps stop at every
+// sample. Light and heavy damping, a damper without a spring, m != 1,
+// starts at rest and sliding.
+TEST(GeneralEventAccuracy, GroundRecordWithSpringDamperHarmonic) {
+  // Three tones under a half-sine envelope, dt = 0.02 s from t = 0.5 s, at
+  // two levels (mostly stick-slip, mostly sliding).
+  const auto tones = [](double level) {
+    auto record = std::make_shared<frictionref::GroundMotion>();
+    for (int i = 0; i <= 500; ++i) {
+      const double t = 0.5 + 0.02 * i;
+      const double envelope = std::sin(M_PI * i / 500.0) + 0.2;
+      record->t.push_back(t);
+      record->a.push_back(
+          level * envelope *
+          (0.8 * std::sin(2.1 * t) + 0.5 * std::sin(5.3 * t + 1) + 0.3 * std::sin(11.0 * t)));
+    }
+    record->file = "three tones";
+    record->npts = record->t.size();
+    return std::shared_ptr<const frictionref::GroundMotion>(record);
+  };
+  struct Case {
+    double R, Rs, k, c, B, mass;
+  };
+  Checker checker;
+  for (const double level : {1.0, 2.5})
+    for (const Case& cs : {Case{0.3, 0.3, 4, 0, 0, 1}, Case{0.2, 0.35, 4, 0.4, 0, 1},
+                           Case{0.1, 0.25, 1, 6, 0, 1}, Case{0.25, 0.4, 0, 0.8, 0, 1},
+                           Case{0.2, 0.3, 9, 0.3, 0.3, 1}, Case{0.6, 0.8, 8, 1, 0, 2}}) {
+      Model m = base(cs.R, cs.Rs);
+      m.stiffness = cs.k;
+      m.damping = cs.c;
+      m.amplitude = cs.B;
+      m.omega = 1.7;
+      m.mass = cs.mass;
+      m.ground_motion = tones(level);
+      checker.run(m, 14);
+      m.x0 = 0.3;  // from off the spring's equilibrium, sliding
+      m.v0 = -0.5;
+      checker.run(m, 14);
+    }
+  checker.finish("ground record with spring, damper, harmonic");
+  EXPECT_GT(checker.events(), 150u);
+}
+
 TEST(GeneralEventAccuracy, ScaledUnitsAndStarts) {
   Checker checker;
   for (const double v0 : {0.0, 1.5, -4.0})
@@ -703,13 +776,13 @@ TEST(GeneralEventAccuracyHighPrecision, ReferenceAgreesWithTheFiftyDigitEngine) 
   Real worst = 0;
   for (const Model& model : models) {
     const double t_end = model.t0 + 30;
-    const auto hp = frictionref::solve(frictionref::model_cast<HighPrecision>(model),
-                                       HighPrecision(t_end));
+    const auto hp =
+        frictionref::solve(frictionref::model_cast<HighPrecision>(model), HighPrecision(t_end));
     const gref::Result reference = gref::solve(to_reference_input(model), t_end);
     std::vector<Span> raw_hp, raw_reference;
     for (std::size_t j = 0; j < hp.phases.size(); ++j)
-      raw_hp.push_back({kind_code(hp.phases[j].kind), Real(hp.phases[j].t_begin),
-                        Real(hp.phases[j].t_end), j});
+      raw_hp.push_back(
+          {kind_code(hp.phases[j].kind), Real(hp.phases[j].t_begin), Real(hp.phases[j].t_end), j});
     for (std::size_t j = 0; j < reference.phases.size(); ++j)
       raw_reference.push_back({kind_code(reference.phases[j].kind), reference.phases[j].t_begin,
                                reference.phases[j].t_end, j});

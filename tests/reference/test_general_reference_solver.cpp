@@ -3,13 +3,21 @@
 // overdamped oscillators, the Coulomb free oscillator losing 2R/k per half
 // cycle, a damper without spring, the secular growth at resonance, a forced
 // frictionless spring across its reversals, the static-friction breakaway,
-// a grazing dip inside a step, and independence of the Taylor step.
+// a grazing dip inside a step, and independence of the Taylor step; with a
+// ground record: the rigid block against the separate record reference
+// (record_reference_solver.hpp), the spring under a ramp, the damped spring
+// under a step of acceleration (frictionless, and with a stick broken by the
+// record's jumps at t_0 and t_{n-1}), and independence of the Taylor step.
 // No frictionref library code is involved (the engine is not linked).
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
 
 #include <boost/math/constants/constants.hpp>
 
 #include "general_reference_solver.hpp"
+#include "record_reference_solver.hpp"
 
 namespace gref = frictionref_general_reference;
 using gref::Kind;
@@ -37,8 +45,9 @@ void expect_consistent(const gref::Result& r) {
   EXPECT_EQ(ph.back().t_end, r.t_end);
   EXPECT_TRUE(ph.back().at_horizon);
   auto N = [&](const Real& t, const Real& x) { return in.force(t) - in.stiffness * x; };
-  const Real force_scale =
+  Real force_scale =
       1 + abs_r(in.force_offset) + in.static_friction + in.stiffness * (1 + abs_r(in.x0));
+  for (const Real& a : in.record_a) force_scale += in.mass * abs_r(a);
   for (std::size_t i = 0; i < ph.size(); ++i) {
     const gref::Phase& p = ph[i];
     EXPECT_GT(p.t_end, p.t_begin) << "phase " << i;
@@ -55,7 +64,14 @@ void expect_consistent(const gref::Result& r) {
     EXPECT_EQ(p.v_end, 0) << "phase " << i;
     EXPECT_EQ(q.v_begin, 0) << "phase " << i;
     const Real n_end = N(p.t_end, p.x_end);
-    if (p.kind == Kind::stick) {
+    if (p.kind == Kind::stick && p.at_record_jump) {
+      // The record's jump at t_0 or t_{n-1} took |N| (right limit) past Rs.
+      EXPECT_NE(q.kind, Kind::stick);
+      EXPECT_TRUE(p.t_end == in.record_t.front() || p.t_end == in.record_t.back())
+          << "breakaway " << i;
+      EXPECT_GT(abs_r(n_end), in.static_friction) << "breakaway " << i;
+      EXPECT_EQ(gref::sign_of(q.kind), n_end > 0 ? 1 : -1) << "breakaway " << i;
+    } else if (p.kind == Kind::stick) {
       EXPECT_NE(q.kind, Kind::stick);
       EXPECT_NEAR(static_cast<double>(abs_r(n_end) - in.static_friction), 0,
                   1e-40 * static_cast<double>(force_scale))
@@ -360,4 +376,307 @@ TEST(GeneralReferenceSolver, TruncationBoundBelowRounding) {
   const gref::Result r = gref::solve(in, 30);
   EXPECT_LT(r.max_truncation, Real("1e-55"));
   EXPECT_LE(r.max_degree, 80u);
+}
+
+// ---------------------------------------------------------------------------
+// Ground records: m x'' + c x' + k x = F(t) - m a_g(t) - f, a_g linear between
+// the samples, 0 before t_0 and from t_{n-1} on.
+
+namespace {
+
+struct BlockCase {
+  const char* name;
+  std::vector<double> t, a;
+  double mass, offset, friction, static_friction, x0, v0, t0, t_end;
+};
+
+// The rigid block (k = c = 0, no harmonic): the general reference against
+// the separate record reference (exact segment integrals and quadratic
+// roots): the same phases, event times and positions to 1e-40.
+void expect_matches_record_reference(const BlockCase& c, std::size_t min_events) {
+  SCOPED_TRACE(c.name);
+  gref::Input in;
+  in.mass = c.mass;
+  in.amplitude = 0;
+  in.friction = c.friction;
+  in.static_friction = c.static_friction;
+  in.force_offset = c.offset;
+  in.record_t = c.t;
+  in.record_a = c.a;
+  in.x0 = c.x0;
+  in.v0 = c.v0;
+  in.t0 = c.t0;
+  const gref::Result r = gref::solve(in, c.t_end);
+  expect_consistent(r);
+
+  frictionref_reference::RecordBlock block;
+  block.t = c.t;
+  block.a = c.a;
+  block.offset = c.offset / c.mass;
+  block.mu = c.friction / c.mass;
+  block.mu_static = c.static_friction / c.mass;
+  // The per-mass fields must be the same numbers (mass a power of 2).
+  ASSERT_EQ(block.offset * c.mass, c.offset);
+  ASSERT_EQ(block.mu * c.mass, c.friction);
+  ASSERT_EQ(block.mu_static * c.mass, c.static_friction);
+  block.t0 = c.t0;
+  block.x0 = c.x0;
+  block.v0 = c.v0;
+  const auto events = frictionref_reference::solve_record_block(block, c.t_end);
+
+  ASSERT_GE(events.size(), min_events);
+  ASSERT_EQ(r.phases.size(), events.size() + 1);
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const gref::Phase& p = r.phases[i];
+    const Real scale = abs_r(events[i].t) > 1 ? abs_r(events[i].t) : Real(1);
+    EXPECT_LT(abs_r(p.t_end - Real(events[i].t)), Real("1e-40") * scale) << "event " << i;
+    EXPECT_LT(abs_r(p.x_end - Real(events[i].x)), Real("1e-40") * (1 + abs_r(p.x_end)))
+        << "event " << i;
+    EXPECT_EQ(gref::sign_of(r.phases[i + 1].kind), events[i].kind_after) << "event " << i;
+  }
+}
+
+}  // namespace
+
+TEST(GeneralReferenceSolverRecord, RigidBlockMatchesTheRecordReference) {
+  // Stuck until t_0, where the jump of a_g (N = 0.125 - 0.8) breaks it away
+  // backward; the record's end (a second jump) inside a stick or a slip.
+  expect_matches_record_reference({"jump start",
+                                   {0.5, 1.25, 2, 3.5, 4},
+                                   {0.8, -1.5, 1.2, -0.6, 0.9},
+                                   1, 0.125, 0.25, 0.375, 0, 0, 0, 8},
+                                  4);
+  // Starting inside the record with v0 != 0, m = 2.
+  expect_matches_record_reference({"inside, moving",
+                                   {-1, 0.75, 1.5, 2.25, 3},
+                                   {0.3, 1.1, -0.9, 0.5, -0.2},
+                                   2, 0.25, 0.5, 0.75, 0.1, 0.3, 0.25, 6},
+                                  3);
+  // Stuck inside the record (|N| <= Rs) until its end, where a_g jumps to 0
+  // and N = F0 > Rs: a breakaway forward at exactly t_{n-1}.
+  expect_matches_record_reference(
+      {"end jump", {0, 1, 2}, {0.5, 0.625, 0.375}, 1, 0.625, 0.375, 0.5, 0, 0, 0.5, 4}, 1);
+  // A sampled two-tone signal, 161 samples: stops, sticks and breakaways.
+  BlockCase tones{"two tones", {}, {}, 1, 0.05, 0.8, 1.05, 0, 0, 0, 7};
+  for (int i = 0; i <= 160; ++i) {
+    const double t = 0.25 + i / 32.0;
+    tones.t.push_back(t);
+    tones.a.push_back(1.5 * std::sin(2.5 * t) + 0.4 * std::sin(7 * t));
+  }
+  expect_matches_record_reference(tones, 6);
+}
+
+// R = Rs = 0, m = 1, k = 4 from rest at 0, t0 = 0; a_g a single ramp
+// a0 + q (t - t_0) on [t_0, t_1) = [0.25, 4.25) (a0 = -0.5, q = 0.45), 0
+// elsewhere. At rest until t_0, where N jumps to 0.5: a breakaway forward at
+// exactly t_0. Then x'' + 4 x = -(a0 + q tau), tau = t - t_0, from rest:
+//   x = -(a0 + q tau)/k + (a0/k) cos(wn tau) + q/(k wn) sin(wn tau),
+// and after t_1 the free oscillation from the state there; the reversals do
+// not change the motion (R = 0).
+TEST(GeneralReferenceSolverRecord, SpringUnderARampIsTheLinearSolution) {
+  gref::RealInput in = unforced(1, 4, 0);
+  in.record_t = {Real(0.25), Real(4.25)};
+  in.record_a = {Real(-0.5), Real(1.3)};
+  const Real k = in.stiffness, wn = 2, t_0 = in.record_t[0], t_1 = in.record_t[1];
+  const Real a0 = in.record_a[0], q = (in.record_a[1] - a0) / (t_1 - t_0);
+  auto ramp = [&](const Real& tau, Real& x, Real& v) {
+    x = -(a0 + q * tau) / k + a0 / k * cos_r(wn * tau) + q / (k * wn) * sin_r(wn * tau);
+    v = -q / k - a0 * wn / k * sin_r(wn * tau) + q / k * cos_r(wn * tau);
+  };
+  Real x1, v1;
+  ramp(t_1 - t_0, x1, v1);
+  auto exact = [&](const Real& t, Real& x, Real& v) {
+    if (t < t_0) {
+      x = v = 0;
+    } else if (t < t_1) {
+      ramp(t - t_0, x, v);
+    } else {
+      const Real s = t - t_1;
+      x = x1 * cos_r(wn * s) + v1 / wn * sin_r(wn * s);
+      v = -x1 * wn * sin_r(wn * s) + v1 * cos_r(wn * s);
+    }
+  };
+  const gref::Result r = gref::solve(in, Real(7));
+  expect_consistent(r);
+  ASSERT_GE(r.phases.size(), 5u);
+  EXPECT_EQ(r.phases[0].kind, Kind::stick);
+  EXPECT_EQ(r.phases[0].t_end, t_0);
+  EXPECT_TRUE(r.phases[0].at_record_jump);
+  EXPECT_EQ(r.phases[1].kind, Kind::slip_forward);
+  EXPECT_EQ(r.phases[1].start, gref::Start::breakaway);
+  for (std::size_t i = 1; i < r.phases.size(); ++i) {
+    const gref::Phase& p = r.phases[i];
+    EXPECT_NE(p.kind, Kind::stick) << i;
+    Real x, v;
+    exact(p.t_end, x, v);
+    EXPECT_LT(abs_r(p.x_end - x), Real("1e-40")) << i;
+    EXPECT_LT(abs_r(p.v_end - v), Real("1e-40")) << i;  // v = 0 at the events
+  }
+}
+
+namespace {
+
+// The damped oscillator (m, c, k; sigma = c/2m, wn^2 = k/m, wd = sqrt(wn^2 -
+// sigma^2)) under a constant force, through its equilibrium x_e: released
+// from rest at x_a, x = x_e + (x_a - x_e) e^(-sigma tau)(cos wd tau + sigma/wd
+// sin wd tau), v = -(x_a - x_e) (wn^2/wd) e^(-sigma tau) sin wd tau.
+struct DampedStep {
+  Real sigma, wd, wn2;
+  void state(const Real& x_a, const Real& x_e, const Real& tau, Real& x, Real& v) const {
+    const Real decay = exp_r(-sigma * tau);
+    x = x_e + (x_a - x_e) * decay * (cos_r(wd * tau) + sigma / wd * sin_r(wd * tau));
+    v = -(x_a - x_e) * wn2 / wd * decay * sin_r(wd * tau);
+  }
+  // Free from (x1, v1) towards x_e.
+  void free(const Real& x1, const Real& v1, const Real& x_e, const Real& s, Real& x,
+            Real& v) const {
+    const Real decay = exp_r(-sigma * s), y = x1 - x_e;
+    x = x_e + decay * (y * cos_r(wd * s) + (v1 + sigma * y) / wd * sin_r(wd * s));
+    v = decay * (v1 * cos_r(wd * s) - (wn2 * y + sigma * v1) / wd * sin_r(wd * s));
+  }
+};
+
+}  // namespace
+
+// R = Rs = 0, m = 1.5, c = 0.9, k = 6 from rest at 0; a_g = A = 0.8 on
+// [0.5, 3.5) (two samples), 0 elsewhere: the step response towards
+// x_e = -m A / k, then the free decay from the state at t_1 = 3.5 (the jump
+// back to 0 is a jump of the force, the state is continuous).
+TEST(GeneralReferenceSolverRecord, DampedSpringStepResponse) {
+  gref::RealInput in = unforced(Real(1.5), 6, Real(0.9));
+  in.record_t = {Real(0.5), Real(3.5)};
+  in.record_a = {Real(0.8), Real(0.8)};
+  const Real m = in.mass, k = in.stiffness, A = in.record_a[0];
+  const Real t_0 = in.record_t[0], t_1 = in.record_t[1];
+  DampedStep d;
+  d.sigma = in.damping / (2 * m);
+  d.wn2 = k / m;
+  d.wd = sqrt_r(d.wn2 - d.sigma * d.sigma);
+  const Real x_e = -m * A / k;
+  Real x1, v1;
+  d.state(0, x_e, t_1 - t_0, x1, v1);
+  auto exact = [&](const Real& t, Real& x, Real& v) {
+    if (t < t_0) {
+      x = v = 0;
+    } else if (t < t_1) {
+      d.state(0, x_e, t - t_0, x, v);
+    } else {
+      d.free(x1, v1, 0, t - t_1, x, v);
+    }
+  };
+  const gref::Result r = gref::solve(in, Real(9));
+  expect_consistent(r);
+  ASSERT_GE(r.phases.size(), 5u);
+  EXPECT_EQ(r.phases[0].t_end, t_0);
+  EXPECT_TRUE(r.phases[0].at_record_jump);
+  EXPECT_EQ(r.phases[1].kind, Kind::slip_backward);
+  // The first stop of the step response at tau = pi / wd.
+  EXPECT_LT(abs_r(r.phases[1].t_end - (t_0 + kPi / d.wd)), kTight);
+  for (std::size_t i = 1; i < r.phases.size(); ++i) {
+    const gref::Phase& p = r.phases[i];
+    EXPECT_NE(p.kind, Kind::stick) << i;
+    Real x, v;
+    exact(p.t_end, x, v);
+    EXPECT_LT(abs_r(p.x_end - x), Real("1e-40")) << i;
+    EXPECT_LT(abs_r(p.v_end - v), Real("1e-40")) << i;
+  }
+}
+
+// With friction (m = 1, c = 0.3, k = 2, R = 0.2, Rs = 0.3, F0 = 0.1) and
+// a_g = 0.7 on [1.5, 6): stuck at 0 (|N| = 0.1) until the jump at t_0 = 1.5
+// makes N = -0.6, a breakaway backward at exactly t_0; the slip is the step
+// response towards x_e = (F0 - m A + R)/k and stops at t_0 + pi/wd, where
+// |N| <= Rs: stuck until the jump back at t_1 = 6 makes |N| > Rs, a breakaway
+// forward at exactly t_1, a step response towards (F0 - R)/k, a stop at
+// t_1 + pi/wd and a stick to the horizon.
+TEST(GeneralReferenceSolverRecord, RecordJumpsBreakAStickAtTheSampleTimes) {
+  gref::RealInput in = unforced(1, 2, Real(0.3));
+  in.friction = Real(0.2);
+  in.static_friction = Real(0.3);
+  in.force_offset = Real(0.1);
+  in.record_t = {Real(1.5), Real(6)};
+  in.record_a = {Real(0.7), Real(0.7)};
+  const Real m = in.mass, k = in.stiffness, A = in.record_a[0], R = in.friction;
+  const Real F0 = in.force_offset, t_0 = in.record_t[0], t_1 = in.record_t[1];
+  DampedStep d;
+  d.sigma = in.damping / (2 * m);
+  d.wn2 = k / m;
+  d.wd = sqrt_r(d.wn2 - d.sigma * d.sigma);
+  const gref::Result r = gref::solve(in, Real(10));
+  expect_consistent(r);
+  ASSERT_EQ(r.phases.size(), 5u);
+  const Kind kinds[] = {Kind::stick, Kind::slip_backward, Kind::stick, Kind::slip_forward,
+                        Kind::stick};
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(r.phases[i].kind, kinds[i]) << i;
+  EXPECT_EQ(r.phases[0].t_end, t_0);
+  EXPECT_TRUE(r.phases[0].at_record_jump);
+  EXPECT_EQ(r.phases[1].start, gref::Start::breakaway);
+  const Real half = kPi / d.wd;
+  const Real x_e1 = (F0 - m * A + R) / k;
+  Real xs1, vs1;
+  d.state(0, x_e1, half, xs1, vs1);
+  EXPECT_LT(abs_r(r.phases[1].t_end - (t_0 + half)), kTight);
+  EXPECT_LT(abs_r(r.phases[1].x_end - xs1), kTight);
+  EXPECT_EQ(r.phases[2].t_end, t_1);
+  EXPECT_TRUE(r.phases[2].at_record_jump);
+  EXPECT_EQ(r.phases[3].start, gref::Start::breakaway);
+  const Real x_e2 = (F0 - R) / k;
+  Real xs2, vs2;
+  d.state(xs1, x_e2, half, xs2, vs2);
+  EXPECT_LT(abs_r(r.phases[3].t_end - (t_1 + half)), kTight);
+  EXPECT_LT(abs_r(r.phases[3].x_end - xs2), kTight);
+  EXPECT_TRUE(r.phases[4].at_horizon);
+}
+
+// Every feature with a record (41 samples on [1, 11], jumps at both ends;
+// slips, stops, sticks, breakaways): Taylor steps of 1/2 and 1/9 of 1/Omega
+// give the same events to 1e-42.
+TEST(GeneralReferenceSolverRecord, IndependentOfTheTaylorStep) {
+  gref::Input in;
+  in.mass = 1.25;
+  in.amplitude = 0.6;
+  in.omega = 1.7;
+  in.friction = 0.8;
+  in.static_friction = 1;
+  in.stiffness = 1.5;
+  in.damping = 0.2;
+  in.force_offset = 0.05;
+  in.harmonics = {{0.3, 3.1, 0.4}};
+  for (int i = 0; i <= 40; ++i) {
+    const double t = 1 + i / 4.0;
+    in.record_t.push_back(t);
+    in.record_a.push_back(0.9 * std::sin(1.3 * t) + 0.5 * std::cos(4.1 * t) + 0.2);
+  }
+  in.t0 = 0.5;
+  std::vector<std::vector<Real>> runs;
+  for (const Real& fraction : {Real(1) / 2, Real(1) / 9}) {
+    gref::Options options;
+    options.step_fraction = fraction;
+    const gref::Result r = gref::solve(gref::RealInput::from_double(in), Real(14), options);
+    expect_consistent(r);
+    runs.push_back(event_times(r));
+  }
+  ASSERT_GE(runs[0].size(), 8u);
+  ASSERT_EQ(runs[1].size(), runs[0].size());
+  for (std::size_t i = 0; i < runs[0].size(); ++i)
+    EXPECT_LT(abs_r(runs[1][i] - runs[0][i]), Real("1e-42")) << i;
+}
+
+TEST(GeneralReferenceSolverRecord, RejectsBadRecords) {
+  gref::Input in;
+  in.record_t = {0, 1, 2};
+  in.record_a = {0.1, 0.2, 0.3};
+  EXPECT_NO_THROW(gref::solve(in, 3));
+  auto rejects = [&](const std::vector<double>& t, const std::vector<double>& a) {
+    gref::Input bad = in;
+    bad.record_t = t;
+    bad.record_a = a;
+    EXPECT_THROW(gref::solve(bad, 3), std::invalid_argument);
+  };
+  rejects({0, 1}, {0.1, 0.2, 0.3});                // lengths differ
+  rejects({1}, {0.1});                             // one sample
+  rejects({0, 1, 1}, {0.1, 0.2, 0.3});             // not strictly increasing
+  rejects({0, 2, 1}, {0.1, 0.2, 0.3});             // decreasing
+  rejects({0, 1, 2}, {0.1, std::nan(""), 0.3});    // non-finite
+  rejects({0, 1, HUGE_VAL}, {0.1, 0.2, 0.3});      // non-finite
 }
