@@ -50,13 +50,20 @@
 //               damping, force_offset
 //   byte        number of extra harmonics, % 4; then per harmonic B, W, PHI (encoding
 //               bits 4, 5, 6 of the general byte, shared by all harmonics)
+//   a ground record, if flag bit 6 (docs/theory.md 9):
+//   byte        number of samples, 2 + byte % 31
+//   byte        encoding: bit 0 times raw, bit 1 accelerations raw
+//   fields      t_0, a_0, then per further sample dt_i (t_i = t_{i-1} + dt_i), a_i
 //
 // The general model (anything but the seed's) is checked against its own rules:
 // N(t) = F(t) - k x; a stick keeps |N| <= Rs, a breakaway has |N| = Rs in the
 // slip's direction, a stop into a stick has |N| <= Rs, a reversal has N
 // beyond Rs against the old direction; a slip keeps the sign of v. Its
 // tolerances are relative to the a priori bounds of the motion (1e-9 of them):
-// the target looks for wrong decisions, not for the last ulp.
+// the target looks for wrong decisions, not for the last ulp. With a record,
+// N includes -m a_g(t) (right-continuous: at a sample time the segment to its
+// right), and a breakaway at a sample time may find |N| beyond Rs (a_g jumps
+// at the record's first and last sample).
 #include <algorithm>
 #include <cinttypes>
 #include <cmath>
@@ -66,11 +73,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 
-#include "fuzz_check.hpp"
 #include "frictionref/frictionref.hpp"
+#include "fuzz_check.hpp"
 
 namespace {
 
@@ -211,10 +219,15 @@ void print_phase(const char* name, const Phase& p) {
                  g_context->max_phases ? std::to_string(*g_context->max_phases).c_str() : "(none)",
                  g_context->phase_number);
     if (!m.is_harmonic_coulomb()) {
-      std::fprintf(stderr, "  static_friction=%.17g stiffness=%.17g damping=%.17g force_offset=%.17g\n",
+      std::fprintf(stderr,
+                   "  static_friction=%.17g stiffness=%.17g damping=%.17g force_offset=%.17g\n",
                    m.static_limit(), m.stiffness, m.damping, m.force_offset);
       for (const auto& h : m.harmonics)
         std::fprintf(stderr, "  harmonic=%.17g,%.17g,%.17g\n", h.amplitude, h.omega, h.phase);
+      if (m.ground_motion)
+        for (std::size_t i = 0; i < m.ground_motion->t.size(); ++i)
+          std::fprintf(stderr, "  record t=%.17g a=%.17g\n", m.ground_motion->t[i],
+                       m.ground_motion->a[i]);
     }
   }
   if (previous) print_phase("previous", *previous);
@@ -222,7 +235,6 @@ void print_phase(const char* name, const Phase& p) {
   std::fflush(stderr);
   std::abort();
 }
-
 
 long double force(const Model& m, double t) {
   return static_cast<long double>(m.amplitude) *
@@ -269,23 +281,33 @@ bool finite(const Phase& p) {
          std::isfinite(p.x_end) && std::isfinite(p.v_begin) && std::isfinite(p.v_end);
 }
 
-
 // ---- the general model --------------------------------------------------
 
 // A priori bounds of the general motion over [t0, t_end] (the energy grows at
 // most at rate |v| (F_max + R)), its fastest rate, and the scale tolerances are
 // taken relative to.
 struct GeneralScales {
-  long double force = 0;   // |F0| + B + sum |B_i|
-  long double speed = 0;   // >= |v|
-  long double travel = 0;  // >= |x|
-  long double fast = 0;    // max(w, w_i, sqrt(k/m), c/m) [1/time]
+  long double force = 0;        // |F0| + B + sum |B_i| + m max |a_g|
+  long double record_rate = 0;  // m max |a_g'|
+  long double speed = 0;        // >= |v|
+  long double travel = 0;       // >= |x|
+  long double fast = 0;         // max(w, w_i, sqrt(k/m), c/m) [1/time]
 };
 
 GeneralScales general_scales(const Model& m, double t_end) {
   GeneralScales g;
   g.force = std::fabs(static_cast<long double>(m.force_offset)) + m.amplitude;
   for (const auto& h : m.harmonics) g.force += std::fabs(static_cast<long double>(h.amplitude));
+  if (m.ground_motion) {
+    const auto& r = *m.ground_motion;
+    for (std::size_t i = 0; i < r.a.size(); ++i) {
+      if (i + 1 < r.a.size())
+        g.record_rate = std::max<long double>(
+            g.record_rate, m.mass * std::fabs(static_cast<long double>(r.a[i + 1]) - r.a[i]) /
+                               (static_cast<long double>(r.t[i + 1]) - r.t[i]));
+    }
+    g.force += static_cast<long double>(m.mass) * r.pga();
+  }
   const long double v0 = m.v0, x0 = m.x0, k = m.stiffness, mass = m.mass;
   const long double span = static_cast<long double>(t_end) - m.t0;
   g.speed = std::sqrt(v0 * v0 + k * x0 * x0 / mass) + (g.force + m.friction) * span / mass;
@@ -296,13 +318,34 @@ GeneralScales general_scales(const Model& m, double t_end) {
   return g;
 }
 
-// F(t) - k x, in long double.
+// a_g(t) as the engine takes it: linear between samples, 0 before the first
+// and from the last on (right-continuous at every sample).
+long double ground_accel(const Model& m, double t) {
+  if (!m.ground_motion) return 0;
+  const auto& ts = m.ground_motion->t;
+  const auto& as = m.ground_motion->a;
+  if (t < ts.front() || t >= ts.back()) return 0;
+  const std::size_t i =
+      static_cast<std::size_t>(std::upper_bound(ts.begin(), ts.end(), t) - ts.begin()) - 1;
+  const long double h = static_cast<long double>(ts[i + 1]) - ts[i];
+  return as[i] + (static_cast<long double>(as[i + 1]) - as[i]) * ((t - ts[i]) / h);
+}
+
+// True if t is one of the record's sample times.
+bool at_sample(const Model& m, double t) {
+  if (!m.ground_motion) return false;
+  const auto& ts = m.ground_motion->t;
+  return std::binary_search(ts.begin(), ts.end(), t);
+}
+
+// F(t) - m a_g(t) - k x, in long double.
 long double net_force(const Model& m, double t, double x) {
   long double f = m.force_offset + static_cast<long double>(m.amplitude) *
                                        std::sin(static_cast<long double>(m.omega) * t);
   for (const auto& h : m.harmonics)
     f += static_cast<long double>(h.amplitude) *
          std::sin(static_cast<long double>(h.omega) * t + h.phase);
+  f -= static_cast<long double>(m.mass) * ground_accel(m, t);
   return f - static_cast<long double>(m.stiffness) * x;
 }
 
@@ -314,8 +357,11 @@ long double force_tolerance(const Model& m, const GeneralScales& g, double t, do
   const long double scale = g.force + m.static_limit() + std::fabs(m.stiffness * x);
   const long double phase = 64 * kEps * std::fmax(1.0L, g.fast * std::fabs(t));
   long double oracle = 0;
-  for (const auto& h : m.harmonics) oracle += std::fabs(h.amplitude) * 4 * kEps * std::fabs(h.phase);
-  return 1e-9L * scale + phase * (g.force + std::fabs(m.stiffness * x)) + oracle;
+  for (const auto& h : m.harmonics)
+    oracle += std::fabs(h.amplitude) * 4 * kEps * std::fabs(h.phase);
+  // The record's value at a time rounded to double (and to tau = w t).
+  const long double record = g.record_rate * 64 * kEps * std::fmax(1.0L, std::fabs(t));
+  return 1e-9L * scale + phase * (g.force + std::fabs(m.stiffness * x)) + oracle + record;
 }
 
 long double speed_tolerance(const GeneralScales& g) { return 1e-9L * g.speed; }
@@ -349,8 +395,8 @@ void check_phase_general(const Model& m, const GeneralScales& g, const Phase& p)
   }
 }
 
-void check_boundary_general(const Model& m, const GeneralScales& g, const Phase& p,
-                            const Phase& q, std::uint64_t skipped) {
+void check_boundary_general(const Model& m, const GeneralScales& g, const Phase& p, const Phase& q,
+                            std::uint64_t skipped) {
   FUZZ_CHECK_AT(q.t_begin == p.t_end, &q, &p);
   FUZZ_CHECK_AT(p.v_end == 0, &q, &p);
   FUZZ_CHECK_AT(q.v_begin == 0, &q, &p);
@@ -361,8 +407,11 @@ void check_boundary_general(const Model& m, const GeneralScales& g, const Phase&
   const long double tolerance = force_tolerance(m, g, q.t_begin, q.x_begin);
   const long double rs = m.static_limit();
   const int s = frictionref::slip_sign(p.kind), next = frictionref::slip_sign(q.kind);
-  if (s == 0) {  // a breakaway: |N| reached Rs in the slip's direction
-    FUZZ_CHECK_AT(std::fabs(std::fabs(n) - rs) <= tolerance, &q, &p);
+  if (s == 0) {                   // a breakaway: |N| reached Rs in the slip's direction
+    if (at_sample(m, q.t_begin))  // or jumped past it (the record's ends)
+      FUZZ_CHECK_AT(std::fabs(n) >= rs - tolerance, &q, &p);
+    else
+      FUZZ_CHECK_AT(std::fabs(std::fabs(n) - rs) <= tolerance, &q, &p);
     FUZZ_CHECK_AT(next * n >= -tolerance, &q, &p);
   } else if (next == 0) {  // a stop into a stick
     FUZZ_CHECK_AT(std::fabs(n) <= rs + tolerance, &q, &p);
@@ -553,8 +602,10 @@ void run(const Model& model, double t_end, const SolveOptions& options, bool lim
   const long double fastest = general ? scales.fast : static_cast<long double>(model.omega);
   const long double periods = (static_cast<long double>(t_end) - model.t0) * fastest / kTwoPi;
   if (!(periods <= kMaxPeriods)) return;  // bound the work per input
+  // A record adds a few events per sample interval at most.
   const std::uint64_t max_count =
-      kPhasesPerPeriod * (static_cast<std::uint64_t>(std::floor(periods)) + 1);
+      kPhasesPerPeriod * (static_cast<std::uint64_t>(std::floor(periods)) + 1) +
+      (model.ground_motion ? 8 * model.ground_motion->samples() : 0);
   const bool values = !allowed().overflow || solution_in_double_range(model, t_end);
 
   Context context{model, t_end, std::nullopt, 0};
@@ -679,7 +730,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (limited) options.max_phases = bytes.little_endian(2);
   if (flags & 32) {
     const std::uint8_t general = bytes.byte();
-    const auto next = [&](int bit) { return (general >> bit) & 1 ? bytes.raw_double() : bytes.decimal(); };
+    const auto next = [&](int bit) {
+      return (general >> bit) & 1 ? bytes.raw_double() : bytes.decimal();
+    };
     const double static_field = next(0);
     model.static_friction = (general & 1) ? static_field : model.friction + std::fabs(static_field);
     model.stiffness = next(1);
@@ -693,6 +746,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       h.phase = next(6);
       model.harmonics.push_back(h);
     }
+  }
+  if (flags & 64) {
+    const std::size_t samples = 2 + bytes.byte() % 31;
+    const std::uint8_t encoding_record = bytes.byte();
+    const auto time = [&] { return encoding_record & 1 ? bytes.raw_double() : bytes.decimal(); };
+    const auto accel = [&] { return encoding_record & 2 ? bytes.raw_double() : bytes.decimal(); };
+    auto record = std::make_shared<frictionref::GroundMotion>();
+    record->t.push_back(time());
+    record->a.push_back(accel());
+    for (std::size_t i = 1; i < samples; ++i) {
+      record->t.push_back(record->t.back() + time());
+      record->a.push_back(accel());
+    }
+    record->file = "fuzz";
+    record->npts = samples;
+    model.ground_motion = record;
   }
 
   run(model, t_end, options, limited);

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Seed inputs of the general model for fuzz_engine (tests/fuzz/corpus/engine/general-*).
+"""Seed inputs of the general model for fuzz_engine (tests/fuzz/corpus/engine/general-*,
+record-*: with a ground record).
 
 Each seed is a model of the general family written in fuzz_engine's input
 layout (see the comment at the top of tests/fuzz/fuzz_engine.cpp) with every
@@ -7,7 +8,7 @@ field as a decimal m * 10^e. Run from the repository root:
 
     python3 tests/fuzz/tools/make_engine_seeds.py
 
-It rewrites the general-* files; the other seeds are untouched.
+It rewrites the general-* and record-* files; the other seeds are untouched.
 """
 import pathlib
 import struct
@@ -20,9 +21,11 @@ def decimal(value_mantissa, exponent):
 
 
 def seed(mass, amplitude, omega, friction, x0, v0, t0, periods,
-         static_extra, stiffness, damping, offset, harmonics):
-    """Fields as (mantissa, exponent) pairs; t_end as a number of forcing periods."""
-    out = bytes([0x00, (2 << 1) | 32])  # decimals; t_end in periods; general block
+         static_extra, stiffness, damping, offset, harmonics, record=None):
+    """Fields as (mantissa, exponent) pairs; t_end as a number of forcing periods.
+    record: [(t0, a0), (dt1, a1), ...] as (mantissa, exponent) pairs, or None."""
+    flags = (2 << 1) | 32 | (64 if record else 0)
+    out = bytes([0x00, flags])  # decimals; t_end in periods; general block; record
     for field in (mass, amplitude, omega, friction, x0, v0, t0, periods):
         out += decimal(*field)
     out += bytes([0x00])  # general fields as decimals
@@ -31,6 +34,10 @@ def seed(mass, amplitude, omega, friction, x0, v0, t0, periods,
     out += bytes([len(harmonics)])
     for b, w, phi in harmonics:
         out += decimal(*b) + decimal(*w) + decimal(*phi)
+    if record:
+        out += bytes([len(record) - 2, 0x00])  # samples - 2; times and values as decimals
+        for time, accel in record:
+            out += decimal(*time) + decimal(*accel)
     return out
 
 
@@ -50,11 +57,25 @@ SEEDS = {
     "general-drift": (one, zero, one, (2, -1), zero, zero, zero, (5, 0), zero, zero, (1, -1), (3, -1), []),
 }
 
+# A short record (t_0 = 0.5, dt = 0.25, a in units of 0.1) with each structure.
+RECORD = [((5, -1), (8, -1)), ((25, -2), (-12, -1)), ((25, -2), (15, -1)), ((25, -2), (-3, -1)),
+          ((25, -2), (-9, -1)), ((25, -2), (11, -1)), ((25, -2), (2, -1)), ((25, -2), (-6, -1))]
+RECORD_SEEDS = {
+    "record-rigid": (one, zero, one, (3, -1), zero, zero, zero, (1, 0), (1, -1), zero, zero, zero, []),
+    "record-spring": (one, zero, one, (2, -1), zero, zero, zero, (1, 0), (1, -1), (4, 0), zero, zero, []),
+    "record-damped-harmonic": (one, (2, -1), (3, 0), (2, -1), zero, zero, zero, (2, 0), (1, -1), (4, 0),
+                               (3, -1), zero, [((1, -1), (7, 0), zero)]),
+    "record-overdamped": (one, zero, one, (1, -1), zero, zero, zero, (1, 0), (1, -1), one, (5, 0), zero, []),
+    "record-damper-only": (one, zero, one, (2, -1), zero, (5, -1), zero, (1, 0), zero, zero, (1, 0), zero, []),
+}
+
 def main():
     corpus = pathlib.Path("tests/fuzz/corpus/engine")
     for name, fields in SEEDS.items():
         (corpus / name).write_bytes(seed(*fields))
-    print(f"wrote {len(SEEDS)} seeds to {corpus}")
+    for name, fields in RECORD_SEEDS.items():
+        (corpus / name).write_bytes(seed(*fields, record=RECORD))
+    print(f"wrote {len(SEEDS) + len(RECORD_SEEDS)} seeds to {corpus}")
 
 
 if __name__ == "__main__":
