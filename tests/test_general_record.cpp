@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -164,6 +165,55 @@ TEST(GeneralRecord, MeetsTheRigidBlockLawsOnARigidBlock) {
     }
     EXPECT_LE(worst, 4) << "largest event-time difference, ulps";
   }
+}
+
+// Resampling the record linearly at dt/10 gives the same ground motion (the
+// record is linear between its samples), so the same motion: the general laws
+// then carry the state across ten times as many interval ends, each a
+// rounding of the work type (long double), far below double's. Every event
+// the same, to a few ulps.
+TEST(GeneralRecord, InvariantUnderLinearResampling) {
+  std::vector<double> t, a;
+  for (int i = 0; i <= 1000; ++i) {
+    t.push_back(0.02 * i);
+    a.push_back(3 * std::sin(2.3 * t.back()) * std::sin(0.7 * t.back()) +
+                1.5 * std::sin(9.1 * t.back() + 0.4));
+  }
+  std::vector<double> fine_t, fine_a;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i)
+    for (int j = 0; j < 10; ++j) {
+      // Points on the segment's line, in long double, rounded once.
+      const long double f = j / 10.0L;
+      fine_t.push_back(static_cast<double>(t[i] + f * (static_cast<long double>(t[i + 1]) - t[i])));
+      fine_a.push_back(static_cast<double>(a[i] + f * (static_cast<long double>(a[i + 1]) - a[i])));
+    }
+  fine_t.push_back(t.back());
+  fine_a.push_back(a.back());
+  Model m;
+  m.amplitude = 0;
+  m.friction = 0.8;
+  m.static_friction = 1.1;
+  m.stiffness = 9;
+  m.damping = 0.3;
+  m.harmonics.push_back({0.2, 1.3, 0.5});
+  m.ground_motion = record(t, a);
+  Model fine = m;
+  fine.ground_motion = record(fine_t, fine_a);
+  const double t_end = 22;
+  const Solution coarse_run = solve(m, t_end), fine_run = solve(fine, t_end);
+  testing::expect_well_formed(coarse_run, t_end);
+  testing::expect_well_formed(fine_run, t_end);
+  ASSERT_GT(coarse_run.phases.size(), 20u);
+  ASSERT_EQ(fine_run.phases.size(), coarse_run.phases.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < coarse_run.phases.size(); ++i) {
+    EXPECT_EQ(fine_run.phases[i].kind, coarse_run.phases[i].kind) << "phase " << i;
+    worst = std::max(worst, ulps(fine_run.phases[i].t_end, coarse_run.phases[i].t_end));
+    EXPECT_NEAR(fine_run.phases[i].x_end, coarse_run.phases[i].x_end, 1e-13) << "phase " << i;
+  }
+  EXPECT_LE(worst, 16) << "largest event-time difference, ulps";
+  std::printf("resampled x10: %zu phases, largest event-time difference %.3g ulps\n",
+              coarse_run.phases.size(), worst);
 }
 
 // At the record's first sample a_g jumps from 0 to -3: N = 3 > Rs = 2 breaks
