@@ -7,6 +7,7 @@
 // (tests/reference) checks the same models to 4 ulps.
 #include <gtest/gtest.h>
 
+#include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/ground_motion.hpp"
 #include "frictionref/model.hpp"
+#include "frictionref/multiprecision.hpp"
 #include "solution_checks.hpp"
 
 namespace frictionref {
@@ -78,6 +80,30 @@ TEST(GeneralRecord, SpringUnderARampMatchesTheClosedForm) {
   for (const double t : {0.25, 0.5, 0.75, 0.999}) {
     const long double x = -0.5L * t + sinl(2.0L * t) / 4;
     EXPECT_NEAR(s.state_at(t).x, static_cast<double>(x), 1e-16) << "t = " << t;
+  }
+}
+
+// The same model in the 50-digit instance of the engine (the same template,
+// Work = cpp_bin_float_50): the ramp's closed form G2 and the interval walk in
+// 50 digits, against the closed form in 50 digits (Boost.Multiprecision).
+TEST(GeneralRecord, SpringUnderARampInFiftyDigits) {
+  using Wide = HighPrecision;
+  BasicModel<Wide> m;
+  m.amplitude = 0;
+  m.stiffness = 4;
+  m.ground_motion = record({0, 1}, {0, 2});
+  const BasicSolution<Wide> s = solve(m, Wide(6));
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  const Wide x1 = Wide(-0.5) + sin(Wide(2)) / 4, v1 = (cos(Wide(2)) - 1) / 2;
+  Wide phi = atan(v1 / (2 * x1));
+  if (phi < 0) phi += boost::math::constants::pi<Wide>();
+  ASSERT_GE(s.phases.size(), 3u);
+  for (std::size_t j = 0; j + 1 < s.phases.size(); ++j) {
+    const Wide t = 1 + (phi + Wide(j) * boost::math::constants::pi<Wide>()) / 2;
+    EXPECT_LT(abs(s.phases[j].t_end - t), Wide("1e-45")) << "stop " << j;
+    const Wide u = t - 1;
+    const Wide x = x1 * cos(2 * u) + v1 / 2 * sin(2 * u);
+    EXPECT_LT(abs(s.phases[j].x_end - x), Wide("1e-45")) << "stop " << j;
   }
 }
 
