@@ -264,14 +264,71 @@ TEST(GeneralRecord, JumpAtTheFirstSampleBreaksAwayAtIt) {
   EXPECT_NEAR(s.state_at(2.0).x, x2, 1e-15);
 }
 
-TEST(GeneralRecord, OneWayStaysTheRigidBlocks) {
+// One-way (Newmark's downslope block, never towards negative x) through the
+// general laws: on a rigid block (a damper of 1e-200) they must agree with the
+// rigid block's own one-way laws, within 4 ulps, on a noise record.
+TEST(GeneralRecord, OneWayMeetsTheRigidBlockLaws) {
+  std::vector<double> t, a;
+  unsigned state = 777;
+  for (int i = 0; i <= 600; ++i) {
+    state = state * 1103515245u + 12345u;
+    t.push_back(0.01 * i);
+    a.push_back(3.0 * ((state >> 8) % 2001 / 1000.0 - 1.0) - 0.5);
+  }
+  Model rigid;
+  rigid.amplitude = 0;
+  rigid.friction = 0.8;
+  rigid.static_friction = 1.0;
+  rigid.one_way = true;
+  rigid.ground_motion = record(t, a);
+  const double t_end = 7;
+  const Solution reference = solve(rigid, t_end);
+  testing::expect_well_formed(reference, t_end);
+  ASSERT_GT(reference.phases.size(), 20u);
+  Model general = rigid;
+  general.damping = 1e-200;
+  const Solution s = solve(general, t_end);
+  testing::expect_well_formed(s, t_end);
+  ASSERT_EQ(s.phases.size(), reference.phases.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < s.phases.size(); ++i) {
+    EXPECT_EQ(s.phases[i].kind, reference.phases[i].kind) << "phase " << i;
+    EXPECT_NE(s.phases[i].kind, PhaseKind::slip_backward) << "phase " << i;
+    worst = std::max(worst, ulps(s.phases[i].t_end, reference.phases[i].t_end));
+    EXPECT_NEAR(s.phases[i].x_end, reference.phases[i].x_end,
+                1e-14 * (1 + std::fabs(reference.phases[i].x_end)))
+        << "phase " << i;
+  }
+  EXPECT_LE(worst, 4) << "largest event-time difference, ulps";
+}
+
+// One-way with a spring: m = 1, k = 1, R = Rs = 1 under a_g = -3 on [0, 4),
+// then 0. From rest N = 3 > 1: x'' + x = 2, x = 2 (1 - cos t) until v = 2 sin t
+// = 0 at t = pi (x = 4); there N = 3 - 4 = -1, on the lower edge: two-way it
+// would stay (|N| <= Rs); then at t = 4 a_g jumps to 0, N = -4: two-way the
+// mass slides back, one-way it stays at x = 4 to the end.
+TEST(GeneralRecord, OneWaySpringStaysWhereTwoWaySlidesBack) {
   Model m;
   m.amplitude = 0;
-  m.friction = 0.5;
+  m.friction = 1;
   m.stiffness = 1;
-  m.one_way = true;
-  m.ground_motion = record({0, 1}, {1, 1});
-  EXPECT_EQ(expect_invalid([&] { solve(m, 1.0); }).parameter(), "one_way");
+  m.ground_motion = record({0, 4}, {-3, -3});
+  Model one_way = m;
+  one_way.one_way = true;
+  const Solution two = solve(m, 8.0), one = solve(one_way, 8.0);
+  testing::expect_well_formed(two, 8.0);
+  testing::expect_well_formed(one, 8.0);
+  ASSERT_EQ(one.phases.size(), 2u);
+  EXPECT_EQ(one.phases[0].kind, PhaseKind::slip_forward);
+  EXPECT_LE(ulps(one.phases[0].t_end, M_PI), 4);
+  EXPECT_NEAR(one.phases[0].x_end, 4.0, 4e-15);
+  EXPECT_EQ(one.phases[1].kind, PhaseKind::stick);
+  // Two-way: the same first slip and stick, then backwards from t = 4.
+  ASSERT_GE(two.phases.size(), 3u);
+  EXPECT_EQ(two.phases[0].t_end, one.phases[0].t_end);
+  EXPECT_EQ(two.phases[1].kind, PhaseKind::stick);
+  EXPECT_EQ(two.phases[1].t_end, 4.0);
+  EXPECT_EQ(two.phases[2].kind, PhaseKind::slip_backward);
 }
 
 }  // namespace

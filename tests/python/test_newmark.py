@@ -351,7 +351,6 @@ CASES = [
     (lambda: model(yield_accel=0.1, accel_units="furlongs"), ["events", *TWO_COLUMNS, "--yield-accel", "0.1", "--accel-units", "furlongs", "--t-end", "1"]),
     (lambda: model(yield_accel=0.1, record_dt=0.01), ["events", *TWO_COLUMNS, "--yield-accel", "0.1", "--record-dt", "0.01", "--t-end", "1"]),
     (lambda: model(yield_accel=0.1, gravity=0), ["events", *TWO_COLUMNS, "--yield-accel", "0.1", "--gravity", "0", "--t-end", "1"]),
-    (lambda: frictionref.events(model(yield_accel=0.1, stiffness=1, one_way=True), 1), ["events", *TWO_COLUMNS, "--yield-accel", "0.1", "--stiffness", "1", "--one-way", "--t-end", "1"]),
     (lambda: model(yield_accel=0.1, one_way=True, v0=-1), ["events", *TWO_COLUMNS, "--yield-accel", "0.1", "--one-way", "--v0", "-1", "--t-end", "1"]),
     (lambda: M(ground_accel="column.txt", yield_accel=0.1), ["events", "--ground-accel", "column.txt", "--yield-accel", "0.1", "--t-end", "1"]),
     (lambda: M(friction=1, one_way=True), ["events", "--friction", "1", "--one-way", "--t-end", "1"]),

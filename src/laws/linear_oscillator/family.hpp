@@ -1,7 +1,8 @@
 // The general family of phase laws (docs/theory.md 7): static friction
 // Rs >= R, spring, damper, force offset and several harmonics, and a ground
-// record with any of them (docs/theory.md 9.6; two-way: the one-way block is
-// the rigid block's, laws/rigid_block_record).
+// record with any of them (docs/theory.md 9.6), two-way or one-way (never
+// towards negative x: a stick then ends only at the band's upper edge, and a
+// decision to slide backwards is one to stay).
 //
 // A slip ends at the first zero of v, a stick at the first time |N| > Rs;
 // both are found by the certified search of numeric/first_zero.hpp on the
@@ -38,16 +39,12 @@ class LinearOscillatorFamily {
 
   LinearOscillatorFamily(const BasicModel<Real>& model, const Real& t_end, const Work& tau0,
                          const Work& tau_end, BasicSummary<Real>& summary)
-      : o_(model), tau_end_(tau_end), summary_(&summary) {
+      : o_(model), one_way_(model.one_way), tau_end_(tau_end), summary_(&summary) {
     using std::fabs;
     using std::sqrt;
     // A priori bounds (docs/theory.md 7.6): the energy m v^2 / 2 + k x^2 / 2
     // grows at most at rate |v| (F_max + R), so |v| <= sqrt(v0^2 + k x0^2 / m)
     // + (F_max + R) (t - t0) / m.
-    if (model.one_way)
-      throw InvalidInput("one_way", "true",
-                         "one-way sliding (Newmark's downslope block) is solved for the rigid "
-                         "block only: no spring, damper or harmonic force with --one-way");
     const Work m(model.mass);
     Work f_max = fabs(Work(model.force_offset)) + Work(model.amplitude);
     for (const auto& h : model.harmonics) f_max += fabs(Work(h.amplitude));
@@ -97,7 +94,13 @@ class LinearOscillatorFamily {
     Work n = 0, e_n = 0;
     Work excess = 0, e_excess = 0;  // |N| - Rs
   };
-  AtRest at_rest(const Work& tau, const Work& y, const ForceAtStop* at_stop = nullptr) const;
+  // One-way, a decision to slide backwards is one to stay.
+  AtRest at_rest(const Work& tau, const Work& y, const ForceAtStop* at_stop = nullptr) const {
+    const AtRest decision = at_rest_two_way(tau, y, at_stop);
+    if (one_way_ && decision.direction < 0) return {};
+    return decision;
+  }
+  AtRest at_rest_two_way(const Work& tau, const Work& y, const ForceAtStop* at_stop) const;
   // The zero of a decreasing f in a bracket of the event search: certified
   // Halley steps where the scalar type polishes that way, else (or if they
   // do not settle) the scalar type's bracketing solver. `third` bounds
@@ -142,13 +145,14 @@ class LinearOscillatorFamily {
   }
 
   Oscillator<Work> o_;
+  bool one_way_;  // a record's downslope block: never towards negative x
   Work tau_end_;
   BasicSummary<Real>* summary_;
 };
 
 template <class Real>
-auto LinearOscillatorFamily<Real>::at_rest(const Work& tau, const Work& y,
-                                           const ForceAtStop* at_stop) const -> AtRest {
+auto LinearOscillatorFamily<Real>::at_rest_two_way(const Work& tau, const Work& y,
+                                                   const ForceAtStop* at_stop) const -> AtRest {
   using std::fabs;
   const NetForce<Work> net(o_, y, o_.record().piece_at(tau));
   auto p = net.point(tau);
@@ -257,20 +261,30 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   // The search runs on f + E, E a bound of f's rounding error over the stick:
   // the mass breaks away only where |N| exceeds Rs by more than rounding (at
   // the time |N| crossed Rs); a tangency of |N| to Rs within rounding, as at
-  // R = B with a spring, leaves it at rest (|N| <= Rs).
+  // R = B with a spring, leaves it at rest (|N| <= Rs). One-way, f = Rs - N:
+  // only the upper edge ends the stick.
+  const Work horizon = fabs(tau) > fabs(tau_end_) ? fabs(tau) : fabs(tau_end_);
   const Work margin =
-      2 * net.value_error_bound(fabs(tau) > fabs(tau_end_) ? fabs(tau) : fabs(tau_end_));
+      2 * (one_way_ ? net.value_error_bound_upper(horizon) : net.value_error_bound(horizon));
   // |n| can never exceed rs by more than rounding: at rest for good.
   if (net.magnitude_bound() * (1 + 64 * std::numeric_limits<Work>::epsilon()) <= o_.rs() &&
       (o_.rs() - net.magnitude_bound()) * (o_.rs() + net.magnitude_bound()) + margin > 0)
     return result;
-  const auto shifted = [&net, margin](const Work& t) {
-    Jet<Work> j = net.jet(net.point(t));
+  const bool one_way = one_way_;
+  const auto jet_of = [&net, one_way](const Work& t) {
+    const auto p = net.point(t);
+    return one_way ? net.jet_upper(p) : net.jet(p);
+  };
+  const auto third_of = [&net, one_way](const Jet<Work>& at, const Work& h) {
+    return one_way ? net.third_bound_upper() : net.third_bound(at, h);
+  };
+  const auto shifted = [&jet_of, margin](const Work& t) {
+    Jet<Work> j = jet_of(t);
     j.f += margin;
     return j;
   };
-  auto search = probe(shifted, [&net](const Work&, const Jet<Work>& at, const Work& h) {
-    return net.third_bound(at, h);
+  auto search = probe(shifted, [&third_of](const Work&, const Jet<Work>& at, const Work& h) {
+    return third_of(at, h);
   });
   const Work res = Traits::time_resolution(tau);
   const ZeroBracket<Work> bracket =
@@ -280,9 +294,9 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
     Work tau = std::numeric_limits<Work>::quiet_NaN();
     Jet<Work> jet;
   } cache;
-  const auto at = [&net, &cache](const Work& t) -> const Jet<Work>& {
+  const auto at = [&jet_of, &cache](const Work& t) -> const Jet<Work>& {
     if (!(t == cache.tau)) {
-      cache.jet = net.jet(net.point(t));
+      cache.jet = jet_of(t);
       cache.tau = t;
     }
     return cache.jet;
@@ -298,13 +312,13 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   if (!(crossing.at_lo.f > 0)) {
     root = crossing.lo;  // |N| reached Rs within rounding before the certain excess
   } else {
-    root = root_in(crossing, jet_unshifted,
-                   net.third_bound(crossing.at_lo, crossing.hi - crossing.lo), f, df);
+    root = root_in(crossing, jet_unshifted, third_of(crossing.at_lo, crossing.hi - crossing.lo), f,
+                   df);
   }
   result.found = root < tau_end_;
   result.tau = root;
   const Work n = net.point(bracket.hi).n;
-  result.direction = n > 0 ? 1 : -1;
+  result.direction = one_way_ || n > 0 ? 1 : -1;
   return result;
 }
 

@@ -10,6 +10,10 @@
 // |d| for k = 1: with a ground record, n holds on one of its segments, where
 // the record's part is linear (record_forcing.hpp).
 //
+// One-way (a block that never moves towards negative x) only the band's
+// upper edge ends a stick: the search runs on f = rs - n instead (jet_upper),
+// with f' = -n', f'' = -n'', f''' = -n'''.
+//
 // The gap rs - |n| is also computed from the band's edge on n's side s,
 // (rs - s f0) + s rho^2 y - s h (h the harmonics), where that is sharper: with
 // F0 near +-Rs and k x small, f0 - rho^2 y rounds to the ulps of F0 while the
@@ -124,6 +128,28 @@ class NetForce {
     return j;
   }
 
+  // The jet of f = rs - n (one-way: the upper edge alone), and >= |f'''| = |n'''|.
+  Jet<Work> jet_upper(const Point& p) const {
+    using std::fabs;
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    Jet<Work> j;
+    if (p.n >= 0) {  // rs - |n|, in its sharper form
+      j.f = p.gap;
+      j.e0 = p.e_gap;
+    } else {  // rs + |n| > rs: far from zero
+      j.f = o_->rs() - p.n;
+      j.e0 = p.e_n + 2 * eps * fabs(j.f);
+    }
+    j.d1 = -p.d1;
+    j.d2 = -p.d2;
+    j.e1 = p.e_d1;
+    j.e2 = p.e_d2;
+    return j;
+  }
+  Work third_bound_upper() const {
+    return o_->forcing().bound(3) * (1 + 64 * std::numeric_limits<Work>::epsilon());
+  }
+
   // >= |f'''| on [tau, tau + h], given the jet at tau: |n| there grows by at
   // most N1 h, which can be far below the global bound of |n| (a harmonic of
   // huge amplitude and tiny frequency hardly moves over the horizon; its
@@ -148,6 +174,28 @@ class NetForce {
   // >= the rounding-error bound e0 of the jet of f wherever |n| is within
   // rounding of rs, for |tau| <= tau_max.
   Work value_error_bound(const Work& tau_max) const {
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    const Work rs = o_->rs();
+    const Work e_n = rounding_near_edge(tau_max);
+    // f = rs^2 - n^2 errs by 2 |n| e_n + e_n^2 and its own rounding. The
+    // bound only matters where f is near 0, i.e. |n| within e_n of rs: not
+    // the largest |n| (a slow harmonic of huge amplitude, or an offset f0
+    // balanced by rho^2 y, would make the margin far larger than the
+    // rounding at the crossing and delay the breakaway: found by fuzzing).
+    const Work n = rs + e_n;
+    return (rs + n) * e_n * 2 + 4 * eps * (rs + n) * (rs + n);
+  }
+
+  // The same for f = rs - n (jet_upper).
+  Work value_error_bound_upper(const Work& tau_max) const {
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    return rounding_near_edge(tau_max) + 4 * eps * o_->rs();
+  }
+
+ private:
+  // >= the rounding bound e_n of n wherever |n| is within rounding of rs,
+  // for |tau| <= tau_max.
+  Work rounding_near_edge(const Work& tau_max) const {
     using std::fabs;
     const Work eps = std::numeric_limits<Work>::epsilon();
     Work mag_n = mag_offset_ + record_max_, phase_n = 0;
@@ -169,17 +217,9 @@ class NetForce {
       if (sharpest > mag_offset) mag_offset = sharpest;
     }
     if (reachable) mag_n += mag_offset - mag_offset_;
-    const Work e_n = kUlps * eps * mag_n + eps * phase_n;
-    // f = rs^2 - n^2 errs by 2 |n| e_n + e_n^2 and its own rounding. The
-    // bound only matters where f is near 0, i.e. |n| within e_n of rs: not
-    // the largest |n| (a slow harmonic of huge amplitude, or an offset f0
-    // balanced by rho^2 y, would make the margin far larger than the
-    // rounding at the crossing and delay the breakaway: found by fuzzing).
-    const Work n = rs + e_n;
-    return (rs + n) * e_n * 2 + 4 * eps * (rs + n) * (rs + n);
+    return kUlps * eps * mag_n + eps * phase_n;
   }
 
- private:
   static constexpr int kUlps = 64;
   const Oscillator<Work>* o_;
   Work offset_;                // f0 - rho^2 y
