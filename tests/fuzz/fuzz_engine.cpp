@@ -52,7 +52,7 @@
 //               bits 4, 5, 6 of the general byte, shared by all harmonics)
 //   a ground record, if flag bit 6 (docs/theory.md 9):
 //   byte        number of samples, 2 + byte % 31
-//   byte        encoding: bit 0 times raw, bit 1 accelerations raw
+//   byte        encoding: bit 0 times raw, bit 1 accelerations raw; bit 2 one-way
 //   fields      t_0, a_0, then per further sample dt_i (t_i = t_{i-1} + dt_i), a_i
 //
 // The general model (anything but the seed's) is checked against its own rules:
@@ -371,6 +371,7 @@ void check_phase_general(const Model& m, const GeneralScales& g, const Phase& p)
   FUZZ_CHECK_AT(p.t_begin < p.t_end, &p);
   FUZZ_CHECK_AT(finite(p), &p);
   const int s = frictionref::slip_sign(p.kind);
+  if (m.one_way) FUZZ_CHECK_AT(s >= 0, &p);  // never towards negative x
   if (s == 0) {
     FUZZ_CHECK_AT(p.v_begin == 0 && p.v_end == 0, &p);
     FUZZ_CHECK_AT(p.x_begin == p.x_end, &p);
@@ -385,9 +386,11 @@ void check_phase_general(const Model& m, const GeneralScales& g, const Phase& p)
     FUZZ_CHECK_AT(std::isfinite(state.x) && std::isfinite(state.v) && std::isfinite(state.a), &p);
     if (s == 0) {
       FUZZ_CHECK_AT(state.v == 0 && state.x == p.x_begin, &p);
-      FUZZ_CHECK_AT(std::fabs(net_force(m, t, p.x_begin)) <=
-                        m.static_limit() + force_tolerance(m, g, t, p.x_begin),
-                    &p);
+      // One-way only the upper edge holds: N may be below -Rs.
+      const long double n = net_force(m, t, p.x_begin);
+      FUZZ_CHECK_AT(
+          (m.one_way ? n : std::fabs(n)) <= m.static_limit() + force_tolerance(m, g, t, p.x_begin),
+          &p);
     } else {
       FUZZ_CHECK_AT(s * state.v >= -speed_tolerance(g), &p);
       FUZZ_CHECK_AT(std::fabs(state.v) <= g.speed * (1 + 1e-9L) + speed_tolerance(g), &p);
@@ -413,8 +416,8 @@ void check_boundary_general(const Model& m, const GeneralScales& g, const Phase&
     else
       FUZZ_CHECK_AT(std::fabs(std::fabs(n) - rs) <= tolerance, &q, &p);
     FUZZ_CHECK_AT(next * n >= -tolerance, &q, &p);
-  } else if (next == 0) {  // a stop into a stick
-    FUZZ_CHECK_AT(std::fabs(n) <= rs + tolerance, &q, &p);
+  } else if (next == 0) {  // a stop into a stick (one-way: N may be below -Rs)
+    FUZZ_CHECK_AT((m.one_way ? n : std::fabs(n)) <= rs + tolerance, &q, &p);
   } else {  // a reversal: N beats Rs against the old direction
     FUZZ_CHECK_AT(next == -s, &q, &p);
     FUZZ_CHECK_AT(next * n >= rs - tolerance, &q, &p);
@@ -435,7 +438,7 @@ void check_first_general(const Model& m, const GeneralScales& g, const Phase& p,
     const long double margin = 1e3L * force_tolerance(m, g, m.t0, m.x0);
     const long double rs = m.static_limit();
     if (n > rs + margin) FUZZ_CHECK_AT(s == 1, &p);
-    if (n < -(rs + margin)) FUZZ_CHECK_AT(s == -1, &p);
+    if (n < -(rs + margin)) FUZZ_CHECK_AT(s == (m.one_way ? 0 : -1), &p);
     if (std::fabs(n) < rs - margin) FUZZ_CHECK_AT(s == 0, &p);
   }
 }
@@ -762,6 +765,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     record->file = "fuzz";
     record->npts = samples;
     model.ground_motion = record;
+    model.one_way = (encoding_record & 4) != 0;
   }
 
   run(model, t_end, options, limited);

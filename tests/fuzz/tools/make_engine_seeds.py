@@ -21,7 +21,7 @@ def decimal(value_mantissa, exponent):
 
 
 def seed(mass, amplitude, omega, friction, x0, v0, t0, periods,
-         static_extra, stiffness, damping, offset, harmonics, record=None):
+         static_extra, stiffness, damping, offset, harmonics, record=None, one_way=False):
     """Fields as (mantissa, exponent) pairs; t_end as a number of forcing periods.
     record: [(t0, a0), (dt1, a1), ...] as (mantissa, exponent) pairs, or None."""
     flags = (2 << 1) | 32 | (64 if record else 0)
@@ -35,7 +35,8 @@ def seed(mass, amplitude, omega, friction, x0, v0, t0, periods,
     for b, w, phi in harmonics:
         out += decimal(*b) + decimal(*w) + decimal(*phi)
     if record:
-        out += bytes([len(record) - 2, 0x00])  # samples - 2; times and values as decimals
+        # samples - 2; times and values as decimals, bit 2: one-way
+        out += bytes([len(record) - 2, 0x04 if one_way else 0x00])
         for time, accel in record:
             out += decimal(*time) + decimal(*accel)
     return out
@@ -75,7 +76,9 @@ def main():
         (corpus / name).write_bytes(seed(*fields))
     for name, fields in RECORD_SEEDS.items():
         (corpus / name).write_bytes(seed(*fields, record=RECORD))
-    print(f"wrote {len(SEEDS) + len(RECORD_SEEDS)} seeds to {corpus}")
+    for name in ("record-rigid", "record-spring"):
+        (corpus / (name + "-one-way")).write_bytes(seed(*RECORD_SEEDS[name], record=RECORD, one_way=True))
+    print(f"wrote {len(SEEDS) + len(RECORD_SEEDS) + 2} seeds to {corpus}")
 
 
 if __name__ == "__main__":
