@@ -286,6 +286,27 @@ def test_events_and_stiff_equal_the_cli(cli, monkeypatch):
             assert float(row[key]) == got[key], key
 
 
+def test_record_with_spring_damper_harmonic_equals_the_cli(cli, monkeypatch):
+    # The general laws under a record (theory.md 9.6), one-way and two-way.
+    monkeypatch.chdir(SYNTHETIC)
+    for one_way in (False, True):
+        args = ["--ground-accel", "noise-burst.AT2", "--yield-accel", "0.1", "--stiffness", "158",
+                "--damping", "1.3", "--static-friction", "1.2", "--harmonic", "0.3,5,0.2",
+                "--t-end", "15"] + (["--one-way"] if one_way else [])
+        code, out, err = cli("events", *args)
+        assert code == 0, err
+        rows = read_csv(out)
+        model = M(ground_accel="noise-burst.AT2", yield_accel=0.1, stiffness=158, damping=1.3,
+                  static_friction=1.2, harmonics=[(0.3, 5, 0.2)], one_way=one_way)
+        table = frictionref.events(model, 15)
+        assert len(table) == len(rows) > 10
+        assert one_way == all(got["phase"] != "slip-" for got in table)
+        for row, got in zip(rows, table):
+            assert row["phase"] == got["phase"]
+            for key in ("t_begin", "t_end", "x_begin", "x_end", "v_begin", "v_end"):
+                assert float(row[key]) == got[key], key
+
+
 def test_model_with_a_record_repr_equality_pickle(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     write_pulse(tmp_path / "pulse.csv", 0.5, 2.0)
