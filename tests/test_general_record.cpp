@@ -287,6 +287,38 @@ TEST(GeneralRecord, RefusesSamplesCloserThanTheTimeResolution) {
   EXPECT_EQ(solve(m, 2.0).summary.termination, Termination::reached_end);
 }
 
+// A ramp of 3e222 per second after a slip of 4.6e-4: the stop is 1e-112 s
+// after the ramp starts, far inside one ulp of t, where the search's maximum
+// of v rounds past the zero (found by fuzzing: the bracket then began where v
+// was -5e183 and the slip "stopped" at the ramp's end, touch after touch until
+// the cap). Now: the stop at the ramp's start, then the ramp throws the mass
+// back; with the other forces 1e-220 of it, v at the ramp's end is the
+// spring's response to the ramp, -(S/w^2)(1 - cos w u), to 1e-4 (damping
+// c/m u = 7e-6).
+TEST(GeneralRecord, SteepRampStopsAtItsStart) {
+  Model m;
+  m.mass = 10113;
+  m.amplitude = 0.2;
+  m.omega = 11;
+  m.friction = 0.2;
+  m.static_friction = 0.30000000000000004;
+  m.stiffness = 5124;
+  m.damping = 0.3;
+  m.force_offset = 16;
+  m.harmonics.push_back({7, 256, 1279});
+  m.ground_motion = record({0.3, 0.55}, {8.3494804985847859e-309, 7.6813179677913809e+221});
+  const double t_end = 1.1423973285781066;
+  const Solution s = solve(m, t_end);
+  testing::expect_well_formed(s, t_end);
+  ASSERT_EQ(s.phases.size(), 2u);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::slip_forward);
+  EXPECT_EQ(s.phases[0].t_end, 0.3);
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::slip_backward);
+  const long double w = sqrtl(5124.0L / 10113), slope = 7.6813179677913809e+221L / 0.25L;
+  const long double v = -(slope / (w * w)) * (1 - cosl(w * 0.25L));
+  EXPECT_NEAR(s.state_at(0.55 * (1 - 1e-15)).v / static_cast<double>(v), 1.0, 1e-4);
+}
+
 // One-way (Newmark's downslope block, never towards negative x) through the
 // general laws: on a rigid block (a damper of 1e-200) they must agree with the
 // rigid block's own one-way laws, within 4 ulps, on a noise record.

@@ -149,7 +149,13 @@ class FirstZeroSearch {
             if (fabs(je.f) <= je.e0) return {true, te, te, je, je};
             if (!(je.f > 0)) return {true, cur, te, j, je};
           } else if (!(jb.f > 0)) {  // maximum at te, then falling to b
-            return {true, te, b, je, jb};
+            if (je.f > 0) return {true, te, b, je, jb};
+            // f <= 0 at the computed maximum: te was rounded past it into a
+            // fall so steep that one ulp of te holds the zero (a record's
+            // ramp of 3e222 per unit time: found by fuzzing). The zero is in
+            // (cur, te], after f(cur) > 0: that is the bracket (f(lo) > 0, as
+            // the caller expects of every bracket but the blind stretch's).
+            return {true, cur, te, j, je};
           }
         }
         cur = b;
