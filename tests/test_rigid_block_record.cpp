@@ -153,6 +153,33 @@ TEST(RigidBlockRecord, StopWhereNewtonHasNothingLeftToCorrect) {
   EXPECT_NEAR(s.phases[1].t_end, static_cast<double>(t1 + h), 4e-16);
 }
 
+// One-way, a slip at 115 m/s meets a ramp of a_g of 6e229 m/s^3: it stops
+// 2e-114 s into it, slides on from rest (g is still above the band) and
+// stops again 1e-231 s later, inside one ulp of t, for ever: the engine hung
+// (found by fuzzing). A slip from rest that stops again within the time
+// resolution with the rule still saying "on" now stays: the stick takes it
+// until the record ends at t = 9520 and g, back to F0/m, breaks it away.
+TEST(RigidBlockRecord, SlipThatStopsAgainWithinTheResolutionStays) {
+  Model m =
+      block(record({2865, 9520}, {1.6254487791674055e-311, 4.0835487642192687e+233}), 0.3, 0.4);
+  m.mass = 6356993;
+  m.omega = 1e-10;
+  m.x0 = -0.2;
+  m.force_offset = 256000;
+  m.one_way = true;
+  const double t_end = 62831853071.79586;
+  const Solution s = solve(m, t_end);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  ASSERT_EQ(s.phases.size(), 3u);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::slip_forward);
+  EXPECT_NEAR(s.phases[0].t_end, 2865, 1e-3);  // the resolution at w = 1e-10 is 1.8e-5 s
+  const double a = (256000 - 0.3) / 6356993;
+  EXPECT_NEAR(s.phases[0].x_end, -0.2 + a * 2865 * 2865 / 2, 1e-6);
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::stick);
+  EXPECT_EQ(s.phases[1].t_end, 9520);
+  EXPECT_EQ(s.phases[2].kind, PhaseKind::slip_forward);
+}
+
 // (A spring, damper or harmonic force with a record is the general family's:
 // test_general_record.cpp.)
 TEST(RigidBlockRecord, RefusesWhatItDoesNotSolve) {

@@ -359,8 +359,15 @@ long double force_tolerance(const Model& m, const GeneralScales& g, double t, do
   long double oracle = 0;
   for (const auto& h : m.harmonics)
     oracle += std::fabs(h.amplitude) * 4 * kEps * std::fabs(h.phase);
-  // The record's value at a time rounded to double (and to tau = w t).
-  const long double record = g.record_rate * 64 * kEps * std::fmax(1.0L, std::fabs(t));
+  // The record's value at a time rounded to double (and to tau = w t), and
+  // its change within the engine's time resolution 8 eps max(1, |w t|) / w,
+  // inside which an event is placed (at a sample, a breakaway the record's
+  // next interval brings within the resolution is placed at the sample).
+  const long double resolution =
+      16 * std::numeric_limits<double>::epsilon() *
+      std::fmax(1.0L, static_cast<long double>(m.omega) * std::fabs(t)) / m.omega;
+  const long double record =
+      g.record_rate * (64 * kEps * std::fmax(1.0L, std::fabs(t)) + resolution);
   return 1e-9L * scale + phase * (g.force + std::fabs(m.stiffness * x)) + oracle + record;
 }
 

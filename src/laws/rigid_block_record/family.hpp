@@ -58,6 +58,7 @@ template <class Real>
 class RigidBlockRecordFamily {
  public:
   using Work = work_t<Real>;
+  using Traits = ScalarTraits<Real>;
   using Net = NetAcceleration<Work>;
   using Segment = typename Net::Segment;
 
@@ -188,6 +189,15 @@ auto RigidBlockRecordFamily<Real>::slip_end(const PhaseStart<Work>& start) -> Sl
       // What follows the stop: the at-rest rule at the stop.
       const Segment after = net_.segment(net_.segment_at(tau_stop));
       const int next = direction_from(Net::value(after, tau_stop), after.slope);
+      if (next == s && v == 0 && !(tau_stop - tau > Traits::time_resolution(tau))) {
+        // Slid from rest and stopped again within the time resolution, the
+        // rule still saying "on": g falls through the band faster than the
+        // engine resolves (a jerk of 6e229: found by fuzzing), and going on
+        // would stop again at once, for ever. The mass stays; the stick's
+        // search takes it from here.
+        end.next_direction = 0;
+        return end;
+      }
       if (next == s) {
         // A touch: v = 0 at an instant, the slip goes on the same way.
         ++summary_->touches;
