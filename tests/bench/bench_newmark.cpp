@@ -3,7 +3,8 @@
 // (BM_RecordSamples), the whole Newmark analysis around it (permanent
 // displacement, peak relative velocity: BM_NewmarkSamples), SLAMMER's
 // trapezoidal algorithm on the same record (BM_SlammerSamples), one-way
-// (Arg 1) and two-way (Arg 0); and the batch of the speed issue, 100 records
+// (Arg 1) and two-way (Arg 0); a spring-damper block on the same record
+// (BM_GeneralRecordSamples: the general laws); and the batch of the speed issue, 100 records
 // x 20 yield accelerations x 2 polarities of 10^4 samples each on 2 threads
 // (BM_NewmarkBatch, wall time).
 #include <benchmark/benchmark.h>
@@ -74,6 +75,31 @@ void BM_RecordSamples(benchmark::State& state) {
       static_cast<double>(phases) / static_cast<double>(state.iterations());
 }
 BENCHMARK(BM_RecordSamples)->ArgName("one_way")->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
+
+// The same record driving a spring-damper block (natural frequency 2 Hz, 5 %
+// of critical damping, KY = 0.1, two-way) through the general laws (theory.md
+// 9.6), to 5 s after the record: per record sample.
+void BM_GeneralRecordSamples(benchmark::State& state) {
+  Model model =
+      newmark_model(newmark_record(synthetic_record(1), Polarity::normal), 0.1, /*one_way=*/false);
+  const double natural = 2 * M_PI * 2;  // rad/s
+  model.stiffness = model.mass * natural * natural;
+  model.damping = 2 * 0.05 * model.mass * natural;
+  const double t_end = model.ground_motion->t.back() + 5;
+  std::uint64_t phases = 0;
+  for (auto _ : state) {
+    ExactEngine engine(model, t_end);
+    Phase phase;
+    while (engine.next(phase)) benchmark::DoNotOptimize(phase);
+    phases += engine.summary().phases;
+  }
+  const auto samples = static_cast<std::uint64_t>(state.iterations()) * kSamples;
+  state.SetItemsProcessed(static_cast<std::int64_t>(samples));
+  state.counters["cos_calls_per_sample"] = cos_calls_per(samples);
+  state.counters["phases_per_run"] =
+      static_cast<double>(phases) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_GeneralRecordSamples)->Unit(benchmark::kMillisecond);
 
 void BM_NewmarkSamples(benchmark::State& state) {
   const bool one_way = state.range(0) != 0;
