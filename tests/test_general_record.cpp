@@ -319,6 +319,32 @@ TEST(GeneralRecord, SteepRampStopsAtItsStart) {
   EXPECT_NEAR(s.state_at(0.55 * (1 - 1e-15)).v / static_cast<double>(v), 1.0, 1e-4);
 }
 
+// A stick early in a long record interval (a ramp of a_g over 1284 s, the
+// horizon at 2e-14 s): the stick's rounding margin came from the record's
+// value at the interval's far end, 1e20 times rs^2, and every stick "broke
+// away" one resolution after it began, a slip+ at a time (found by
+// fuzzing). The breakaway is where N = m a_g' t + B sin(w t) reaches Rs.
+TEST(GeneralRecord, StickEarlyInALongIntervalBreaksAwayWhereNReachesRs) {
+  Model m;
+  m.mass = 631612800000000;
+  m.amplitude = 0.00063161279999999998;
+  m.omega = 631612800000000;
+  m.friction = 0.2;
+  m.static_friction = 6.9;
+  m.stiffness = 4;
+  m.ground_motion = record({0, 1284}, {0, -6323300000000});
+  const double t_end = 1.9895687063908729e-14;
+  const Solution s = solve(m, t_end);
+  testing::expect_well_formed(s, t_end);
+  ASSERT_EQ(s.phases.size(), 2u);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::stick);
+  EXPECT_EQ(s.phases[1].kind, PhaseKind::slip_forward);
+  // N(t) = (m 6.3233e12 / 1284 + B w) t to 1e-20 (sin(w t) = w t there).
+  const long double rate =
+      631612800000000.0L * 6323300000000.0L / 1284 + 0.00063161279999999998L * 631612800000000.0L;
+  EXPECT_NEAR(s.phases[0].t_end / static_cast<double>(6.9L / rate), 1.0, 1e-12);
+}
+
 // One-way (Newmark's downslope block, never towards negative x) through the
 // general laws: on a rigid block (a damper of 1e-200) they must agree with the
 // rigid block's own one-way laws, within 4 ulps, on a noise record.

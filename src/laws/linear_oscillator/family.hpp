@@ -275,7 +275,7 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
     }
     const Work to = piece.end < tau_end_ ? piece.end : tau_end_;
     if (o_.forcing().oscillates() || piece.slope != 0) {
-      result = stick_end_on(NetForce<Work>(o_, y, piece), from, to);
+      result = stick_end_on(NetForce<Work>(o_, y, piece, from, to), from, to);
       if (result.found) return result;
     }
     if (!(piece.end < tau_end_)) return result;
