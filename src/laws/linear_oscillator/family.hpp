@@ -360,8 +360,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   const Work omega = o_.omega();
   // The law of the record's segment that holds the slip's current start
   // (the whole slip without a record); replaced at each segment's end.
-  RecordPiece<Work> piece = o_.record().piece_at(start.tau);
-  LinearSlipLaw<Work> law(o_, start.sign, start.tau, omega * start.x, start.v, piece);
+  LinearSlipLaw<Work> law(o_, start.sign, start.tau, omega * start.x, start.v);
   // The points with error bounds, the last one kept: the search's first
   // step often lands where the noise level after a start was just taken
   // (one resolution on), and the stop's point is the bracket's end.
@@ -460,19 +459,17 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // driven by a harmonic: once a period).
   for (int touches = 0;; ++touches) {
     if (touches > 64) throw SearchStalled{};  // touch after touch without progress
-    if (!(from < piece.end) && piece.end < tau_end_) {
+    if (!(from < law.segment_end()) && law.segment_end() < tau_end_) {
       // The law's segment of the record is over: the next one's law, from
       // the state there.
-      const auto q = law.point(from, false);
-      piece = o_.record().piece_at(from);
-      law = LinearSlipLaw<Work>(o_, start.sign, from, q.y, q.v, piece);
+      law = law.continued_at(from);
       bounded.tau = cache.tau = std::numeric_limits<Work>::quiet_NaN();
       at_from = law.jet(bounded_point(from));
     }
     if (blind > 0) at_from.f = 0;  // exactly: the slip starts (or goes on) from v = 0
     const Work res = Traits::time_resolution(from);
     // The search ends at the horizon or at the end of the law's segment.
-    const Work to = piece.end < tau_end_ ? piece.end : tau_end_;
+    const Work to = law.segment_end() < tau_end_ ? law.segment_end() : tau_end_;
     ZeroBracket<Work> bracket;
     if (from < to)
       bracket = Search::run(search, from, at_from, to, blind, res, step_budget(from, to));

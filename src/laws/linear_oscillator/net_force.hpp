@@ -62,8 +62,8 @@ class NetForce {
       edge_[side] = oscillator.rs() - s * oscillator.forcing().constant();
       mag_edge_[side] = fabs(edge_[side]) + fabs(spring_);
     }
-    record_max_ = piece.max_abs(from > piece.begin ? from : piece.begin,
-                                to < piece.end ? to : piece.end);
+    record_max_ =
+        piece.max_abs(from > piece.begin ? from : piece.begin, to < piece.end ? to : piece.end);
     n0_ = fabs(offset_) + f.bound(0) + record_max_;
   }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "engine/phase_formula.hpp"
@@ -24,19 +25,12 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
       : phase_(phase), oscillator_(model) {
     if (phase.kind == PhaseKind::stick) return;
     const Work omega = oscillator_.omega();
-    const int sign = slip_sign(phase.kind);
-    Work tau = omega * Work(phase.t_begin);
     const Work tau_end = omega * Work(phase.t_end);
-    RecordPiece<Work> piece = oscillator_.record().piece_at(tau);
-    laws_.emplace_back(oscillator_, sign, tau, omega * Work(phase.x_begin), Work(phase.v_begin),
-                       piece);
-    starts_.push_back(tau);
-    while (piece.end < tau_end) {
-      const auto q = laws_.back().point(piece.end, false);
-      tau = piece.end;
-      piece = oscillator_.record().piece_at(tau);
-      laws_.emplace_back(oscillator_, sign, tau, q.y, q.v, piece);
-      starts_.push_back(tau);
+    laws_.emplace_back(oscillator_, slip_sign(phase.kind), omega * Work(phase.t_begin),
+                       omega * Work(phase.x_begin), Work(phase.v_begin));
+    while (laws_.back().segment_end() < tau_end) {
+      LinearSlipLaw<Work> next = laws_.back().continued_at(laws_.back().segment_end());
+      laws_.push_back(std::move(next));
     }
   }
 
@@ -45,9 +39,11 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
     const Work omega = oscillator_.omega();
     const Work tau = omega * Work(t);
     // The last law starting at or before tau (the first before its start).
-    std::size_t j = static_cast<std::size_t>(std::upper_bound(starts_.begin(), starts_.end(), tau) -
-                                             starts_.begin());
-    j = j == 0 ? 0 : j - 1;
+    const auto after = std::upper_bound(
+        laws_.begin(), laws_.end(), tau,
+        [](const Work& value, const LinearSlipLaw<Work>& law) { return value < law.tau_begin(); });
+    const std::size_t j =
+        after == laws_.begin() ? 0 : static_cast<std::size_t>(after - laws_.begin()) - 1;
     const auto q = laws_[j].point(tau, false);
     return slip_state(phase_, t, Real(q.y / omega), Real(q.v), Real(laws_[j].acceleration(q)));
   }
@@ -55,8 +51,7 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
  private:
   BasicPhase<Real> phase_;
   Oscillator<Work> oscillator_;
-  std::vector<Work> starts_;               // tau at each law's start
-  std::vector<LinearSlipLaw<Work>> laws_;  // they point into oscillator_: not copyable
+  std::vector<LinearSlipLaw<Work>> laws_;  // in time order; they point into oscillator_
 };
 
 }  // namespace frictionref::detail

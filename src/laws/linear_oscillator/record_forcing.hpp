@@ -40,7 +40,6 @@ struct RecordPiece {
   }
   // >= |r| on [from, to] within the piece (r is linear: its ends decide).
   Work max_abs(const Work& from, const Work& to) const {
-    using std::fabs;
     const Work a = magnitude(from), b = magnitude(to);
     return a > b ? a : b;
   }

@@ -49,13 +49,16 @@ class LinearSlipLaw {
     Work tail2 = 0;  // (B): sup of |z_h'| from tau on, plus rounding
   };
 
-  // `piece`: the record's segment that holds tau_a (none without a record);
-  // the law holds on [tau_a, piece.end].
+  // The law holds on [tau_a, segment_end()]: to the end of the record's
+  // segment that holds tau_a (for ever without a record).
   LinearSlipLaw(const Oscillator<Work>& oscillator, int sign, const Work& tau_a, const Work& y_a,
-                const Work& v_a, const RecordPiece<Work>& piece = {})
-      : o_(&oscillator), s_(sign), tau_a_(tau_a), y_a_(y_a), v_a_(v_a), ramp_(piece.slope) {
+                const Work& v_a)
+      : o_(&oscillator), s_(sign), tau_a_(tau_a), y_a_(y_a), v_a_(v_a) {
     using std::fabs;
     using std::sqrt;
+    const RecordPiece<Work> piece = o_->record().piece_at(tau_a);
+    ramp_ = piece.slope;
+    segment_end_ = piece.end;
     // g0's rounding: each operation's relative to its result, plus the
     // record value's own (none without one: the bounds stay those of f0 - s r).
     const Work f0 = o_->forcing().constant(), record = piece.value(tau_a);
@@ -89,6 +92,15 @@ class LinearSlipLaw {
 
   int sign() const { return s_; }
   const Work& tau_begin() const { return tau_a_; }
+  const Work& segment_end() const { return segment_end_; }
+
+  // The slip from this law's state at tau (its segment's end) on, under the
+  // law of the segment that holds tau: the engine and dense output carry a
+  // slip across the record's samples this one way.
+  LinearSlipLaw continued_at(const Work& tau) const {
+    const Point q = point(tau, /*with_bounds=*/false);
+    return LinearSlipLaw(*o_, s_, tau, q.y, q.v);
+  }
 
   // The state and derivatives at tau; with_bounds: also the rounding-error
   // bounds and the tail, which only the event search needs.
@@ -249,6 +261,7 @@ class LinearSlipLaw {
   int s_;
   Work tau_a_, y_a_, v_a_;
   Work ramp_ = 0;           // d: the record's slope on the law's segment
+  Work segment_end_ = 0;    // where that segment ends (+infinity without a record)
   Work g0_ = 0;             // f0 + r_g(tau_a) - s r
   Work mag_g0_ = 0;         // the magnitude of its terms
   Work c1_ = 0, e_c1_ = 0;  // g(tau_a) - s r - rho^2 y_a and its rounding bound
