@@ -12,20 +12,13 @@
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/ground_motion.hpp"
 #include "frictionref/model.hpp"
+#include "hand_made_record.hpp"
 
 namespace frictionref {
 namespace {
 
 using testing::expect_invalid;
-
-std::shared_ptr<const GroundMotion> record(std::vector<double> t, std::vector<double> a) {
-  auto r = std::make_shared<GroundMotion>();
-  r->t = std::move(t);
-  r->a = std::move(a);
-  r->file = "hand-made";
-  r->npts = r->t.size();
-  return r;
-}
+using testing::record;
 
 // A block of mass 1 with friction R (static Rs) under `ground`; no harmonic.
 Model block(std::shared_ptr<const GroundMotion> ground, double friction,
