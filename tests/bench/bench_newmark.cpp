@@ -56,11 +56,9 @@ std::shared_ptr<const GroundMotion> synthetic_record(std::uint64_t seed) {
   return record;
 }
 
-void BM_RecordSamples(benchmark::State& state) {
-  const bool one_way = state.range(0) != 0;
-  const Model model =
-      newmark_model(newmark_record(synthetic_record(1), Polarity::normal), 0.1, one_way);
-  const double t_end = newmark_horizon(model);
+// The exact engine streamed over a model with the record of kSamples samples
+// to t_end, per record sample, with the phase count per run.
+void stream_per_sample(benchmark::State& state, const Model& model, double t_end) {
   std::uint64_t phases = 0;
   for (auto _ : state) {
     ExactEngine engine(model, t_end);
@@ -74,6 +72,14 @@ void BM_RecordSamples(benchmark::State& state) {
   state.counters["phases_per_run"] =
       static_cast<double>(phases) / static_cast<double>(state.iterations());
 }
+
+void BM_RecordSamples(benchmark::State& state) {
+  const bool one_way = state.range(0) != 0;
+  const Model model =
+      newmark_model(newmark_record(synthetic_record(1), Polarity::normal), 0.1, one_way);
+  const double t_end = newmark_horizon(model);
+  stream_per_sample(state, model, t_end);
+}
 BENCHMARK(BM_RecordSamples)->ArgName("one_way")->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 
 // The same record driving a spring-damper block (natural frequency 2 Hz, 5 %
@@ -86,18 +92,7 @@ void BM_GeneralRecordSamples(benchmark::State& state) {
   model.stiffness = model.mass * natural * natural;
   model.damping = 2 * 0.05 * model.mass * natural;
   const double t_end = model.ground_motion->t.back() + 5;
-  std::uint64_t phases = 0;
-  for (auto _ : state) {
-    ExactEngine engine(model, t_end);
-    Phase phase;
-    while (engine.next(phase)) benchmark::DoNotOptimize(phase);
-    phases += engine.summary().phases;
-  }
-  const auto samples = static_cast<std::uint64_t>(state.iterations()) * kSamples;
-  state.SetItemsProcessed(static_cast<std::int64_t>(samples));
-  state.counters["cos_calls_per_sample"] = cos_calls_per(samples);
-  state.counters["phases_per_run"] =
-      static_cast<double>(phases) / static_cast<double>(state.iterations());
+  stream_per_sample(state, model, t_end);
 }
 BENCHMARK(BM_GeneralRecordSamples)->Unit(benchmark::kMillisecond);
 
