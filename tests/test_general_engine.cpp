@@ -507,6 +507,45 @@ TEST(GeneralEngine, FarEquilibriumReversesWithTheHarmonic) {
             4 * std::numeric_limits<double>::epsilon() * m.force_offset);
 }
 
+// Found by fuzzing (corpus general-finding-far-equilibrium-turned-touches):
+// no friction (R = Rs = 0), m = k = w = 1 (resonance), c = 0.2, the
+// equilibrium F0 / k = 1.4e15 far from 0 (one long double ulp of x 1.2e-4),
+// driven by B = 5.7e-4: the steady velocity (amplitude B / c = 2.9e-3) is
+// about twice its own rounding there. At the end of a jump over v's noise
+// the slip's v was twice its rounding against the slip and not turning back,
+// while the at-rest rule (N within rounding, rising) said "on": touch after
+// touch one resolution apart until the cap. The mass now rests there, and
+// the run reaches its end, at the equilibrium to the rounding of x.
+TEST(GeneralEngine, FarEquilibriumTurnedAgainstTheSlipRests) {
+  Model m;
+  m.mass = 1;
+  m.amplitude = 0.00057111;
+  m.omega = 1;
+  m.friction = 0;
+  m.stiffness = 1;
+  m.damping = 0.2;
+  m.force_offset = 1376255000000000;
+  m.x0 = 460803;
+  m.v0 = 3342336;
+  m.t0 = 28160;
+  const double t_end = 28738.053048260521;
+  const Solution s = solve(m, t_end);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  const double periods = (t_end - m.t0) * m.omega / (2 * pi);
+  EXPECT_LE(s.phases.size(), static_cast<std::size_t>(4 * (periods + 1)));
+  bool rested = false;
+  for (const Phase& p : s.phases) {
+    if (p.kind != PhaseKind::stick) continue;
+    rested = true;
+    // |N| <= Rs = 0 to the rounding of k x (x within 4 ulps of F0 / k)
+    EXPECT_LE(std::fabs(p.x_begin - m.force_offset),
+              4 * std::numeric_limits<double>::epsilon() * m.force_offset);
+  }
+  EXPECT_TRUE(rested);
+  EXPECT_LE(std::fabs(s.phases.back().x_end - m.force_offset),
+            4 * std::numeric_limits<double>::epsilon() * m.force_offset);
+}
+
 // Found by fuzzing (corpus general-finding-unresolvable-dip-touches): the
 // mass at the band's edge (R = Rs = 3, F0 = 3: x = 0), nudged over it by
 // B = 1e-9. At a touch the slope of v was -9e-21, inside its rounding, with
