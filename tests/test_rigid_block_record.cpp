@@ -13,6 +13,7 @@
 #include "frictionref/ground_motion.hpp"
 #include "frictionref/model.hpp"
 #include "hand_made_record.hpp"
+#include "laws/rigid_block_record/slip_piece.hpp"
 
 namespace frictionref {
 namespace {
@@ -171,6 +172,42 @@ TEST(RigidBlockRecord, SlipThatStopsAgainWithinTheResolutionStays) {
   EXPECT_EQ(s.phases[1].kind, PhaseKind::stick);
   EXPECT_EQ(s.phases[1].t_end, 9520);
   EXPECT_EQ(s.phases[2].kind, PhaseKind::slip_forward);
+}
+
+// One-way, R = Rs = 0: g = -a_g rises from -58 to 0 at the sample
+// t = 1945892 and falls again (a_g 0 -> 2550): it touches the band's edge
+// there and turns back. g at the segment's end, from the segment's slope,
+// rounded a hair above the edge and the block broke away forwards; the slip,
+// with nothing driving it forwards, then "slid" 850 backwards (Newton in a
+// bracket without a root: found by fuzzing). The edge at a sample is now
+// decided from the sample's own value and the slope after it: the block
+// stays at rest to the end.
+TEST(RigidBlockRecord, EdgeTouchedAtASampleIsNoBreakaway) {
+  Model m = block(record({1945600, 1945892, 1946148}, {58, 0, 2550}), 0);
+  m.mass = 3568723000000000;
+  m.omega = 0.0007295461;
+  m.x0 = 240;
+  m.t0 = 1638408;
+  m.one_way = true;
+  const Solution s = solve(m, 2077643.3693154673);
+  ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
+  ASSERT_EQ(s.phases.size(), 1u);
+  EXPECT_EQ(s.phases[0].kind, PhaseKind::stick);
+  EXPECT_EQ(s.phases[0].x_end, 240);
+}
+
+// A slip piece from rest that nothing drives its way (s A <= 0 and s J <= 0)
+// stops at once, where one that is driven (s A > 0, or A = 0 and s J > 0)
+// moves: v = A h + J h^2 / 2.
+TEST(RigidBlockRecord, SlipPieceFromRestMovesOnlyWhereDriven) {
+  std::uint64_t calls = 0;
+  EXPECT_EQ((detail::SlipPiece<long double>{0, 0, 0, -1}.first_stop(1, 256, calls)), 0);
+  EXPECT_EQ((detail::SlipPiece<long double>{0, 0, -1, 0}.first_stop(1, 256, calls)), 0);
+  EXPECT_EQ((detail::SlipPiece<long double>{0, 0, 0, 0}.first_stop(1, 256, calls)), 0);
+  EXPECT_EQ((detail::SlipPiece<long double>{0, 0, 0, 1}.first_stop(-1, 256, calls)), 0);
+  // Driven: A = 0, J = 1 forwards never stops; A = 2, J = -1 stops at h = 4.
+  EXPECT_LT((detail::SlipPiece<long double>{0, 0, 0, 1}.first_stop(1, 256, calls)), 0);
+  EXPECT_EQ((detail::SlipPiece<long double>{0, 0, 2, -1}.first_stop(1, 256, calls)), 4);
 }
 
 // (A spring, damper or harmonic force with a record is the general family's:

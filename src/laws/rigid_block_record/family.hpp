@@ -151,6 +151,12 @@ auto RigidBlockRecordFamily<Real>::stick_end(const Work& tau, const Work& /*x*/)
     if (side * g_to > mu_static_) {
       ++summary_->root_function_calls;
       Work crossing = s.begin + (edge - s.at_begin) / s.slope;
+      // A crossing at the segment's end is left to the next segment's
+      // start, which decides from the sample's own value and the slope after
+      // it: g at the end comes from this slope and is the sample's value
+      // only to rounding (a rounding above the edge broke away where g only
+      // touched it and turned back, R = Rs = 0: found by fuzzing).
+      if (!(crossing < s.end) && s.end < tau_end_ && k + 1 < net_.segments()) continue;
       if (!(crossing >= from)) crossing = from;
       if (crossing > to) crossing = to;
       result = {true, crossing, side};

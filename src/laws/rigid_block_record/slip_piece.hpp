@@ -32,10 +32,17 @@ struct SlipPiece {
 
   // The first h in (0, length] where s v reaches 0, s v being > 0 just
   // after the start (or v = 0 there and s A > 0, or A = 0 and s J > 0);
-  // negative if there is none. `calls` counts velocity evaluations.
+  // 0 from rest without either (the slip cannot move); negative if there is
+  // none. `calls` counts velocity evaluations.
   Work first_stop(int s, const Work& length, std::uint64_t& calls) const {
     using std::fabs;
     using std::sqrt;
+    // From rest, a slip moves only if s A > 0 or (A = 0 and) s J > 0; a
+    // start that rounding left without either stops at once (root() below
+    // needs s v > 0 just after its bracket's start: without it, Newton
+    // walked half the piece towards 0 and the block slid 850 m backwards in a
+    // forward slip, found by fuzzing).
+    if (v == 0 && !(s * acceleration > 0) && !(s * jerk > 0)) return 0;
     const Work sv_end = s * velocity_at(length);
     ++calls;
     // The vertex of v, where the piece splits into two monotone halves.
