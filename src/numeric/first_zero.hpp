@@ -106,7 +106,15 @@ class FirstZeroSearch {
         if (guess < h) h = guess;
       }
     }
+    const Work first = cur;
     while (cur < end) {
+      // A point stepped to where f is within twice its rounding of zero is a
+      // zero, as at the resolution's sign test below: f cannot be told from
+      // 0 there. (A slip whose velocity is rounding noise all along, f just
+      // above e0, was otherwise crawled by proven steps of 1e-11 towards a
+      // horizon a hundred time units away, until the step cap: found by a
+      // sweep of equilibria 1e18 from 0.)
+      if (cur > first && !(j.f > 2 * j.e0)) return {true, cur, cur, j, j};
       if (++steps > max_steps) throw SearchStalled{};
       if (h > end - cur) h = end - cur;
       const Work b = h == end - cur ? end : cur + h;

@@ -414,7 +414,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // cascade of stops and breakaways: both found by fuzzing.)
   const auto blind_after_rest = [this](const Jet<Work>& j, const Work& tau, const Work& y,
                                        const Work& res) {
-    const Work level = 4 * j.e0;
+    const Work level = 4 * j.e0 + (j.f < 0 ? Work(-j.f) : Work(0));
     const Work slope_noise =
         std::max(j.e1, NetForce<Work>(o_, y, o_.record().piece_at(tau)).point(tau).e_gap);
     Work stretch;
@@ -454,6 +454,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     blind = within_noise(from, blind_after_rest(noisy, from, omega * start.x, res), noisy.e0, res);
   }
   SlipEnd<Work> result;
+  bool touched_against = false;  // the last touch had v resolvably against the slip
   // Touches that follow each other within 64 resolutions (no progress) are
   // counted; a slip may touch v = 0 any number of times far apart (R = 0
   // driven by a harmonic: once a period).
@@ -480,6 +481,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
         // next segment's law (at the loop's top).
         from = to;
         blind = 0;
+        touched_against = false;
         touches = -1;  // progress: the loop's ++ starts the count again
         continue;
       }
@@ -523,21 +525,26 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     AtRest decision = at_rest(root, q.y, &at_stop);
     // At the end of a stretch where v was within rounding of 0 (a bracket
     // from a jump over it) the slip's own v may be resolvably against its
-    // direction and not resolvably turning back, while the at-rest rule,
-    // which takes v = 0, says "on the same way" (N within its rounding,
-    // moving that way). A touch would carry on a law whose v runs against
-    // the slip, and the next search would stop at once: touches one
-    // resolution apart until the cap (R = Rs = 0, the velocity hovering at
-    // twice its rounding at an equilibrium 1.4e15 from 0: found by fuzzing).
-    // Nothing resolvable drives the mass on: it stays (|N| <= Rs within
-    // rounding), and the stick's own search finds when N does drive it.
-    const bool turned = !(bracket.at_lo.f > 0) && s * q.v < -2 * q.e_v && !(s * q.d1 > q.e_d1);
+    // direction while the at-rest rule, which takes v = 0, says "on the same
+    // way" (N within its rounding, or v' and N both noise at a far
+    // equilibrium). A touch carries on a law whose v runs against the slip:
+    // the stretch after it covers v's way back (blind_after_rest). Where v
+    // is not resolvably turning back, or that way back already failed once
+    // (the touch before was against the slip too), the next search would
+    // stop at once again: touches one resolution apart until the cap (R =
+    // Rs = 0, velocities at twice their rounding at equilibria 1e15 to 1e20
+    // from 0: found by fuzzing and by a sweep of such models). Nothing
+    // resolvable drives the mass on: it stays (|N| <= Rs within rounding),
+    // and the stick's own search finds when N does drive it.
+    const bool against = !(bracket.at_lo.f > 0) && s * q.v < -q.e_v;
+    const bool turned = against && (!(s * q.d1 > q.e_d1) || touched_against);
     if (decision.direction == start.sign && turned) decision = AtRest{};
     if (decision.direction == start.sign) {
       // v touches 0 where the force drives on the same way: not a stop. The
       // search goes on past the stretch where v is within a few rounding
       // errors of 0 (blind_after_rest; f'' > 0 at a touch).
       ++summary_->touches;
+      touched_against = against;
       at_from = law.jet(q);
       blind = within_noise(root, blind_after_rest(at_from, root, q.y, res), at_from.e0, res);
       if (root > from + 64 * res) touches = 0;
