@@ -114,7 +114,7 @@ class FirstZeroSearch {
       // above e0, was otherwise crawled by proven steps of 1e-11 towards a
       // horizon a hundred time units away, until the step cap: found by a
       // sweep of equilibria 1e18 from 0.)
-      if (cur > first && !(j.f > 2 * j.e0)) return {true, cur, cur, j, j};
+      if (cur > first && counts_as_zero(j)) return {true, cur, cur, j, j};
       if (++steps > max_steps) throw SearchStalled{};
       if (h > end - cur) h = end - cur;
       const Work b = h == end - cur ? end : cur + h;
@@ -187,7 +187,7 @@ class FirstZeroSearch {
         // exclusion step about e0 / |f'| long. The bracket's hi may then
         // have f > 0.
         const Jet<Work> jb = probe.jet(b);
-        if (!(jb.f > 2 * jb.e0)) {
+        if (counts_as_zero(jb)) {
           // Falling into the noise while convex: a tangency (v grazing 0)
           // or a pair of zeros round a minimum. The minimum decides, not the
           // first point in the noise (up to sqrt(e0 / f'') early, where the
@@ -213,6 +213,10 @@ class FirstZeroSearch {
     }
     return {};
   }
+
+  // The sign test's threshold, wherever the search evaluates f: a value
+  // within twice its rounding error of zero counts as zero.
+  static bool counts_as_zero(const Jet<Work>& j) { return !(j.f > 2 * j.e0); }
 
   // min over [u0, u1] of the cubic lower bound of f(a + u) is > 0.
   static bool stays_positive(const Jet<Work>& j, const Work& m, const Work& u0, const Work& u1) {
