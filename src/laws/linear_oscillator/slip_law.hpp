@@ -132,7 +132,8 @@ class LinearSlipLaw {
     Work steady2 = 0, steady3 = 0, mag_steady2 = 0, mag_steady3 = 0;
     for (std::size_t i = 0; i < forcing.size(); ++i) {
       const Work q = forcing[i].q;
-      const SinCos<Work> sc = sin_cos(q * u);
+      // (At the slip's start, u = 0, exactly 1: no sin_cos.)
+      const SinCos<Work> sc = u == 0 ? SinCos<Work>{Work(0), Work(1)} : sin_cos(Work(q * u));
       const Complex<Work> e{sc.cos, sc.sin};
       const ForcedResponse<Work>& response = responses[i];
       if (!have_root_exp && response.needs_root_exp(u)) {
