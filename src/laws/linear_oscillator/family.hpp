@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@
 #include "engine/scalar_traits.hpp"
 #include "frictionref/detail/number_text.hpp"
 #include "frictionref/error.hpp"
+#include "laws/linear_oscillator/duration_guess.hpp"
 #include "laws/linear_oscillator/net_force.hpp"
 #include "laws/linear_oscillator/oscillator.hpp"
 #include "laws/linear_oscillator/slip_law.hpp"
@@ -43,7 +45,12 @@ class LinearOscillatorFamily {
 
   LinearOscillatorFamily(const BasicModel<Real>& model, const Real& t_end, const Work& tau0,
                          const Work& tau_end, BasicSummary<Real>& summary)
-      : o_(model), one_way_(model.one_way), tau_end_(tau_end), summary_(&summary) {
+      : o_(model),
+        one_way_(model.one_way),
+        tau_end_(tau_end),
+        summary_(&summary),
+        slip_guess_(frequencies(o_)),
+        stick_guess_(frequencies(o_)) {
     using std::fabs;
     using std::sqrt;
     // A priori bounds (docs/theory.md 7.6): the energy m v^2 / 2 + k x^2 / 2
@@ -109,10 +116,11 @@ class LinearOscillatorFamily {
   // The zero of a decreasing f in a bracket of the event search: certified
   // Halley steps where the scalar type polishes that way, else (or if they
   // do not settle) the scalar type's bracketing solver. `third` bounds
-  // |f'''| on the bracket.
+  // |f'''| on the bracket; the polish starts from `guess` where there is one
+  // (duration_guess.hpp), else from the secant of the bracket's ends.
   template <class JetAt, class F, class DF>
   Work root_in(const ZeroBracket<Work>& bracket, const JetAt& jet_at, const Work& third, const F& f,
-               const DF& df);
+               const DF& df, const std::optional<Work>& guess);
 
   // The event-search probe on a closed form: `Law` gives jets and bounds.
   template <class Evaluate, class Bound>
@@ -174,10 +182,21 @@ class LinearOscillatorFamily {
     return budget < 1e18 ? static_cast<std::int64_t>(budget) : std::int64_t(1e18);
   }
 
+  static std::vector<double> frequencies(const Oscillator<Work>& o) {
+    std::vector<double> q;
+    for (const ForcingTerm<Work>& f : o.forcing().terms()) q.push_back(static_cast<double>(f.q));
+    return q;
+  }
+
   Oscillator<Work> o_;
   bool one_way_;  // a record's downslope block: never towards negative x
   Work tau_end_;
   BasicSummary<Real>* summary_;
+  // First guesses for the polish of slip and stick ends: slips by their
+  // direction, sticks by that of the slip that stopped into them.
+  DurationGuess<Work> slip_guess_, stick_guess_;
+  int last_stop_sign_ = 0;
+  Work stick_start_ = 0;
 };
 
 template <class Real>
@@ -236,14 +255,16 @@ auto LinearOscillatorFamily<Real>::at_rest_two_way(const Work& tau, const Work& 
 template <class Real>
 template <class JetAt, class F, class DF>
 auto LinearOscillatorFamily<Real>::root_in(const ZeroBracket<Work>& bracket, const JetAt& jet_at,
-                                           const Work& third, const F& f, const DF& df) -> Work {
+                                           const Work& third, const F& f, const DF& df,
+                                           const std::optional<Work>& guess) -> Work {
   // A bracket closed by a sign test at the resolution may end where f is
   // within rounding of zero but positive: the zero is there.
   if (bracket.at_hi.f > 0) return bracket.hi;
   if (!(bracket.at_lo.f > 0)) return bracket.lo;
   if constexpr (Traits::halley_polish) {
-    if (const auto root = halley_polish(jet_at, bracket.lo, bracket.hi, secant_guess(bracket),
-                                        third, summary_->root_function_calls))
+    const Work first = guess ? *guess : secant_guess(bracket);
+    if (const auto root = halley_polish(jet_at, bracket.lo, bracket.hi, first, third,
+                                        summary_->root_function_calls))
       return *root;
   }
   return checked(
@@ -257,6 +278,7 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   const Work y = o_.omega() * x;
   const RecordForcing<Work>& record = o_.record();
   Breakaway<Work> result;
+  stick_start_ = tau;
   if (!o_.forcing().oscillates() && !record.present()) {
     // n is constant: the at-rest rule already decided; it holds for ever.
     return result;
@@ -342,8 +364,10 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   if (!(crossing.at_lo.f > 0)) {
     root = crossing.lo;  // |N| reached Rs within rounding before the certain excess
   } else {
-    root = root_in(crossing, jet_unshifted, third_of(crossing.at_lo, crossing.hi - crossing.lo), f,
-                   df);
+    root =
+        root_in(crossing, jet_unshifted, third_of(crossing.at_lo, crossing.hi - crossing.lo), f, df,
+                stick_guess_.inside(last_stop_sign_, stick_start_, crossing.lo, crossing.hi));
+    if (root < tau_end_) stick_guess_.remember(last_stop_sign_, stick_start_, root);
   }
   result.found = root < tau_end_;
   result.tau = root;
@@ -504,7 +528,11 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     // of 0 (first_zero.hpp): the slip ends, unresolvably, inside that
     // stretch; its end is taken as the stop, not the start (where the at-rest
     // rule has just said "slide").
-    const Work root = bracket.at_lo.f > 0 ? root_in(bracket, cached_jet, third, f, df) : bracket.hi;
+    const Work root =
+        bracket.at_lo.f > 0
+            ? root_in(bracket, cached_jet, third, f, df,
+                      slip_guess_.inside(start.sign, start.tau, bracket.lo, bracket.hi))
+            : bracket.hi;
     const auto q =
         bounded_point(root);  // with its rounding bounds: N at the stop and the touch's jet
     const Work eps = std::numeric_limits<Work>::epsilon();
@@ -552,6 +580,8 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       continue;
     }
     summary_->merged_sticks += decision.merged;
+    slip_guess_.remember(start.sign, start.tau, root);
+    last_stop_sign_ = start.sign;
     result.stops = true;
     result.tau = root;
     result.x = q.y / omega;
