@@ -439,10 +439,13 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   const auto blind_after_rest = [this](const Jet<Work>& j, const Work& tau, const Work& y,
                                        const Work& res) {
     const Work level = 4 * j.e0 + (j.f < 0 ? Work(-j.f) : Work(0));
-    const Work slope_noise =
-        std::max(j.e1, NetForce<Work>(o_, y, o_.record().piece_at(tau)).point(tau).e_gap);
+    // (N from the position is evaluated only where it can decide.)
+    const auto within_slope_noise = [&] {
+      return -j.d1 <= j.e1 ||
+             -j.d1 <= NetForce<Work>(o_, y, o_.record().piece_at(tau)).point(tau).e_gap;
+    };
     Work stretch;
-    if (j.d1 < 0 && -j.d1 <= slope_noise && j.d2 > 0) {
+    if (j.d1 < 0 && j.d2 > 0 && within_slope_noise()) {
       stretch = (-j.d1 + sqrt(j.d1 * j.d1 + 2 * j.d2 * level)) / j.d2;
     } else {
       const Work slope = j.d1 > 0 ? j.d1 : Work(0);
