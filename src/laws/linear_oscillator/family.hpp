@@ -524,7 +524,15 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       result.acceleration = law.acceleration(q);
       return result;
     }
-    const auto cached_jet = [&at, &law](const Work& t) { return law.jet(at(t)); };
+    // With a guess the polish usually accepts after its first evaluation,
+    // a few ulps from the root: that one is made with bounds, and the point
+    // at the stop is moved there from it (LinearSlipLaw::moved) instead of
+    // evaluated afresh.
+    const std::optional<Work> guess =
+        slip_guess_.inside(start.sign, start.tau, bracket.lo, bracket.hi);
+    const auto cached_jet = [&](const Work& t) {
+      return law.jet(guess && t == *guess ? bounded_point(t) : at(t));
+    };
     const Work third = law.third_bound(bracket.lo, bracket.at_lo, bracket.hi - bracket.lo);
     // A bracket that starts where the slip starts (from rest, or after a
     // touch) comes from the jump over the stretch where v is within rounding
@@ -532,12 +540,11 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     // stretch; its end is taken as the stop, not the start (where the at-rest
     // rule has just said "slide").
     const Work root =
-        bracket.at_lo.f > 0
-            ? root_in(bracket, cached_jet, third, f, df,
-                      slip_guess_.inside(start.sign, start.tau, bracket.lo, bracket.hi))
-            : bracket.hi;
-    const auto q =
-        bounded_point(root);  // with its rounding bounds: N at the stop and the touch's jet
+        bracket.at_lo.f > 0 ? root_in(bracket, cached_jet, third, f, df, guess) : bracket.hi;
+    // With its rounding bounds: N at the stop and whether v turned back.
+    const auto q = bounded.tau == root || !law.can_move(bounded.tau, root)
+                       ? bounded_point(root)
+                       : law.moved(bounded.point, root);
     const Work eps = std::numeric_limits<Work>::epsilon();
     const Work damping = 2 * o_.sigma() * q.v;
     ForceAtStop at_stop;
@@ -576,8 +583,10 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       // errors of 0 (blind_after_rest; f'' > 0 at a touch).
       ++summary_->touches;
       touched_against = against;
-      at_from = law.jet(q);
-      blind = within_noise(root, blind_after_rest(at_from, root, q.y, res), at_from.e0, res);
+      // (The touch's jet from a fresh evaluation: the search goes on from it.)
+      const auto& touch = bounded_point(root);
+      at_from = law.jet(touch);
+      blind = within_noise(root, blind_after_rest(at_from, root, touch.y, res), at_from.e0, res);
       if (root > from + 64 * res) touches = 0;
       from = root > from ? root : Work(from + res);
       continue;

@@ -108,6 +108,60 @@ class LinearSlipLaw {
     return with_bounds ? evaluate<true>(tau) : evaluate<false>(tau);
   }
 
+  // Whether a point with bounds at `from` can be moved to `tau` (moved()):
+  // |tau - from| times the fastest rate <= 2^-32, so that the terms the
+  // Taylor steps leave out are below an ulp of long double (a polish from a
+  // good guess ends some 2^-45 away; far inside the <= 1/4 the bounds need).
+  bool can_move(const Work& from, const Work& tau) const {
+    using std::fabs;
+    return fabs(tau - from) * o_->fastest_rate() <= Work(0x1p-32);
+  }
+
+  // The point with bounds at tau from the one at p.tau by Taylor's theorem,
+  // when can_move(p.tau, tau): a stop's polish ends a few ulps from the
+  // point it last evaluated, and this costs a few operations where a new
+  // evaluation costs a few sin_cos (docs/theory.md 7.4). With a = |tau - p.tau|
+  // and v''' = g'' - 2 sigma v'' - rho^2 v' (the slip's equation
+  // differentiated; the record's ramp has g'' = 0), the suprema over the
+  // step A >= |v'''|, B >= |v''|, C >= |v'| satisfy B <= b0 + a A,
+  // C <= c0 + a B, so A (1 - 2 sigma a - rho^2 a^2) <= G2 + 2 sigma b0 +
+  // rho^2 (c0 + a b0), with b0, c0 the bounds of |v''|, |v'| at p.tau; each
+  // moved value carries its Lagrange remainder and its rounding in its bound.
+  // v''' is not moved: its bound becomes infinite, which leaves the tail
+  // (A) of third_bound (from v', v'' and their bounds) and drops (B).
+  Point moved(const Point& p, const Work& tau) const {
+    using std::fabs;
+    using std::sqrt;
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    const Work delta = tau - p.tau, a = fabs(delta);
+    const Work sigma2 = 2 * o_->sigma(), rho2 = o_->rho2();
+    const Work b0 = fabs(p.d2) + p.e_d2, c0 = fabs(p.d1) + p.e_d1;
+    const Work sup3 = 2 * (o_->forcing().bound(2) + sigma2 * b0 + rho2 * (c0 + a * b0));
+    const Work sup2 = b0 + a * sup3;
+    const Work growth = 1 + 16 * eps;  // the rounding of the bounds themselves
+    Point q = p;
+    q.tau = tau;
+    // y and v to second order (their remainders are third order), v' to first.
+    q.y = p.y + delta * (p.v + delta * p.d1 / 2);
+    q.v = p.v + delta * (p.d1 + delta * p.d2 / 2);
+    q.d1 = p.d1 + p.d2 * delta;
+    q.e_y = (p.e_y + p.e_v * a + p.e_d1 * a * a / 2 + sup2 * a * a * a / 6 +
+             4 * eps * (fabs(p.y) + a * (fabs(p.v) + a * fabs(p.d1)))) *
+            growth;
+    q.e_v = (p.e_v + p.e_d1 * a + p.e_d2 * a * a / 2 + sup3 * a * a * a / 6 +
+             4 * eps * (fabs(p.v) + a * (fabs(p.d1) + a * fabs(p.d2)))) *
+            growth;
+    q.e_d1 =
+        (p.e_d1 + p.e_d2 * a + sup3 * a * a / 2 + 4 * eps * (fabs(p.d1) + fabs(p.d2 * delta))) *
+        growth;
+    q.e_d2 = (p.e_d2 + sup3 * a) * growth;
+    q.e_d3 = std::numeric_limits<Work>::infinity();
+    const Work w = fabs(q.d1) + q.e_d1, dw = fabs(q.d2) + q.e_d2;
+    q.tail = sqrt(dw * dw + rho2 * w * w) * (1 + 16 * eps);
+    q.tail2 = std::numeric_limits<Work>::infinity();
+    return q;
+  }
+
  private:
   template <bool kBounds>
   Point evaluate(const Work& tau) const {
