@@ -69,13 +69,19 @@ class FirstZeroSearch {
   // to the oscillations f can make on [a, end] (a slip of a stiff spring
   // rings through 10^4 natural periods at ~10 steps each), and a fixed cap on
   // steps at the resolution, which make no provable progress (the stall).
+  // `aim`, where given, is a point the caller expects the zero just before
+  // (a predicted stop, a little late): a step that would pass over it ends
+  // there instead, so that a bracket closed by that step ends at it and the
+  // caller's polish starts from a point already evaluated. Only a step's
+  // length changes; what each step proves does not.
   static constexpr std::int64_t kDefaultMaxSteps = 100000;
   static constexpr std::int64_t kMaxStepsAtResolution = 100000;
 
   template <class Probe>
   static ZeroBracket<Work> run(Probe& probe, const Work& a, const Jet<Work>& at_a, const Work& end,
                                const Work& blind, const Work& resolution,
-                               std::int64_t max_steps = kDefaultMaxSteps) {
+                               std::int64_t max_steps = kDefaultMaxSteps,
+                               const Work& aim = std::numeric_limits<Work>::quiet_NaN()) {
     using std::fabs;
     Work cur = a;
     Jet<Work> j = at_a;
@@ -117,7 +123,11 @@ class FirstZeroSearch {
       if (cur > first && counts_as_zero(j)) return {true, cur, cur, j, j};
       if (++steps > max_steps) throw SearchStalled{};
       if (h > end - cur) h = end - cur;
-      const Work b = h == end - cur ? end : cur + h;
+      // (Never a step to the aim shorter than the resolution: the branch at
+      // the resolution below would lengthen it again, for ever.)
+      const bool aimed = aim - cur >= resolution && aim < cur + h && aim < end;
+      if (aimed) h = aim - cur;
+      const Work b = aimed ? aim : h == end - cur ? end : cur + h;
       const Work m = probe.third_bound(cur, j, h);
       if (stays_positive(j, m, Work(0), h)) {
         cur = b;

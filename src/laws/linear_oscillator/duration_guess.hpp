@@ -37,9 +37,9 @@ class DurationGuess {
     if (h.size < kDepth) ++h.size;
   }
 
-  // start + the chosen duration, if it lies in (lo, hi).
-  std::optional<Work> inside(int direction, const Work& start, const Work& lo,
-                             const Work& hi) const {
+  // start + the chosen duration: where the phase that began at `start`
+  // should end.
+  std::optional<Work> after(int direction, const Work& start) const {
     if (direction == 0) return std::nullopt;
     const History& h = history(direction);
     const Entry* best = nullptr;
@@ -54,8 +54,14 @@ class DurationGuess {
       if (best_mismatch < 1e-6) break;  // a whole number of periods back: its twin
     }
     if (!best || !(best->duration > 0)) return std::nullopt;
-    const Work guess = start + best->duration;
-    if (guess > lo && guess < hi) return guess;
+    return start + best->duration;
+  }
+
+  // The same, if it lies in (lo, hi).
+  std::optional<Work> inside(int direction, const Work& start, const Work& lo,
+                             const Work& hi) const {
+    const std::optional<Work> guess = after(direction, start);
+    if (guess && *guess > lo && *guess < hi) return guess;
     return std::nullopt;
   }
 

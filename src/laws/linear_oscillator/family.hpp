@@ -480,6 +480,12 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     if (later.e1 > noisy.e1) noisy.e1 = later.e1;
     blind = within_noise(from, blind_after_rest(noisy, from, omega * start.x, res), noisy.e0, res);
   }
+  // Where the slip should end, from the matching earlier slip
+  // (duration_guess.hpp), and a little past it the search's aim
+  // (first_zero.hpp): in a steady state its bracket then ends at the aim.
+  const std::optional<Work> predicted = slip_guess_.after(start.sign, start.tau);
+  const Work aim = predicted ? Work(*predicted + Work(0x1p-36) / o_.fastest_rate())
+                             : std::numeric_limits<Work>::quiet_NaN();
   SlipEnd<Work> result;
   bool touched_against = false;  // the last touch had v resolvably against the slip
   // Touches that follow each other within 64 resolutions (no progress) are
@@ -500,7 +506,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     const Work to = law.segment_end() < tau_end_ ? law.segment_end() : tau_end_;
     ZeroBracket<Work> bracket;
     if (from < to)
-      bracket = Search::run(search, from, at_from, to, blind, res, step_budget(from, to));
+      bracket = Search::run(search, from, at_from, to, blind, res, step_budget(from, to), aim);
     if (!bracket.found && to < tau_end_) {
       const Jet<Work> at_to = law.jet(bounded_point(to));
       if (at_to.f > 0) {
@@ -524,12 +530,17 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       result.acceleration = law.acceleration(q);
       return result;
     }
-    // With a guess the polish usually accepts after its first evaluation,
-    // a few ulps from the root: that one is made with bounds, and the point
-    // at the stop is moved there from it (LinearSlipLaw::moved) instead of
-    // evaluated afresh.
-    const std::optional<Work> guess =
-        slip_guess_.inside(start.sign, start.tau, bracket.lo, bracket.hi);
+    // The polish starts from the aim where the search's bracket ends there
+    // (its point with bounds is at hand), else from the prediction inside the
+    // bracket, else from the secant. From either of the first two it usually
+    // accepts after that one evaluation, a few ulps from the root: the point
+    // at the stop is then moved there from it (LinearSlipLaw::moved) instead
+    // of evaluated afresh.
+    std::optional<Work> guess;
+    if (bracket.hi == aim)
+      guess = aim;
+    else if (predicted && *predicted > bracket.lo && *predicted < bracket.hi)
+      guess = predicted;
     const auto cached_jet = [&](const Work& t) {
       return law.jet(guess && t == *guess ? bounded_point(t) : at(t));
     };
