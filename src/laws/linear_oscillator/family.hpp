@@ -323,8 +323,21 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
       (o_.rs() - net.magnitude_bound()) * (o_.rs() + net.magnitude_bound()) + margin > 0)
     return result;
   const bool one_way = one_way_;
-  const auto jet_of = [&net, one_way](const Work& t) {
-    const auto p = net.point(t);
+  // One point kept: the search's last (the bracket's end, where the polish
+  // starts when it is the aim below) serves the polish and the direction.
+  struct Cached {
+    Work tau = std::numeric_limits<Work>::quiet_NaN();
+    typename NetForce<Work>::Point point;
+  } cache;
+  const auto point_at = [&net, &cache](const Work& t) -> const typename NetForce<Work>::Point& {
+    if (!(t == cache.tau)) {
+      cache.point = net.point(t);
+      cache.tau = t;
+    }
+    return cache.point;
+  };
+  const auto jet_of = [&net, &point_at, one_way](const Work& t) {
+    const auto& p = point_at(t);
     return one_way ? net.jet_upper(p) : net.jet(p);
   };
   const auto third_of = [&net, one_way](const Jet<Work>& at, const Work& h) {
@@ -339,20 +352,17 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
     return third_of(at, h);
   });
   const Work res = Traits::time_resolution(tau);
+  // The predicted breakaway and, a little past it, the search's aim (as for
+  // slips: the bracket then ends where the polish starts).
+  const std::optional<Work> predicted = stick_guess_.after(last_stop_sign_, stick_start_);
+  const Work aim = predicted ? Work(*predicted + Work(0x1p-36) / o_.fastest_rate())
+                             : std::numeric_limits<Work>::quiet_NaN();
   const ZeroBracket<Work> bracket =
-      Search::run(search, tau, search.jet(tau), to, res, res, step_budget(tau, to));
+      Search::run(search, tau, search.jet(tau), to, res, res, step_budget(tau, to), aim);
   if (!bracket.found) return result;
-  struct Cached {
-    Work tau = std::numeric_limits<Work>::quiet_NaN();
-    Jet<Work> jet;
-  } cache;
-  const auto at = [&jet_of, &cache](const Work& t) -> const Jet<Work>& {
-    if (!(t == cache.tau)) {
-      cache.jet = jet_of(t);
-      cache.tau = t;
-    }
-    return cache.jet;
-  };
+  // n > 0 or < 0 beyond the band's edge at the bracket's end.
+  const Work n_beyond = point_at(bracket.hi).n;
+  const auto at = [&jet_of](const Work& t) { return jet_of(t); };
   const auto f = [&at](const Work& t) { return at(t).f; };
   const auto df = [&at](const Work& t) { return at(t).d1; };
   // The crossing of f = 0 (not f + margin) inside the bracket.
@@ -364,15 +374,18 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   if (!(crossing.at_lo.f > 0)) {
     root = crossing.lo;  // |N| reached Rs within rounding before the certain excess
   } else {
-    root =
-        root_in(crossing, jet_unshifted, third_of(crossing.at_lo, crossing.hi - crossing.lo), f, df,
-                stick_guess_.inside(last_stop_sign_, stick_start_, crossing.lo, crossing.hi));
+    std::optional<Work> guess;
+    if (crossing.hi == aim)
+      guess = aim;
+    else if (predicted && *predicted > crossing.lo && *predicted < crossing.hi)
+      guess = predicted;
+    root = root_in(crossing, jet_unshifted, third_of(crossing.at_lo, crossing.hi - crossing.lo), f,
+                   df, guess);
     if (root < tau_end_) stick_guess_.remember(last_stop_sign_, stick_start_, root);
   }
   result.found = root < tau_end_;
   result.tau = root;
-  const Work n = net.point(bracket.hi).n;
-  result.direction = one_way_ || n > 0 ? 1 : -1;
+  result.direction = one_way_ || n_beyond > 0 ? 1 : -1;
   return result;
 }
 
