@@ -109,12 +109,16 @@ class LinearSlipLaw {
   }
 
   // Whether a point with bounds at `from` can be moved to `tau` (moved()):
-  // |tau - from| times the fastest rate <= 2^-32, so that the terms the
-  // Taylor steps leave out are below an ulp of long double (a polish from a
-  // good guess ends some 2^-45 away; far inside the <= 1/4 the bounds need).
+  // |tau - from| times the fastest rate <= sqrt(eps) (about 2^-32 for long
+  // double), so that the terms the Taylor steps leave out, second order in
+  // that product for v' and third for y and v, stay below an ulp of the work
+  // type: a polish from a good guess ends some 2^-36 away; the 50-digit
+  // instance, whose epsilon is far smaller, evaluates afresh.
   bool can_move(const Work& from, const Work& tau) const {
     using std::fabs;
-    return fabs(tau - from) * o_->fastest_rate() <= Work(0x1p-32);
+    using std::sqrt;
+    static const Work limit = sqrt(std::numeric_limits<Work>::epsilon());
+    return fabs(tau - from) * o_->fastest_rate() <= limit;
   }
 
   // The point with bounds at tau from the one at p.tau by Taylor's theorem,
@@ -186,11 +190,19 @@ class LinearSlipLaw {
     Work steady2 = 0, steady3 = 0, mag_steady2 = 0, mag_steady3 = 0;
     for (std::size_t i = 0; i < forcing.size(); ++i) {
       const Work q = forcing[i].q;
-      // (At the slip's start, u = 0, exactly 1: no sin_cos.)
-      const SinCos<Work> sc = u == 0 ? SinCos<Work>{Work(0), Work(1)} : sin_cos(Work(q * u));
-      const Complex<Work> e{sc.cos, sc.sin};
       const ForcedResponse<Work>& response = responses[i];
-      if (!have_root_exp && response.needs_root_exp(u)) {
+      const bool beyond_series = response.needs_root_exp(u);
+      // e^{i q u}: the response needs it beyond its series only; within,
+      // only the bounds' steady response below does, where two Taylor terms
+      // do for the tiny u after a start (no sin_cos; exactly 1 at u = 0).
+      Complex<Work> e{1, 0};
+      if (beyond_series) {
+        const SinCos<Work> sc = sin_cos(Work(q * u));
+        e = {sc.cos, sc.sin};
+      } else if (kBounds && u != 0) {
+        e = small_angle(Work(q * u));
+      }
+      if (!have_root_exp && beyond_series) {
         root_exp = o_->transition().root_exp(u, t);
         have_root_exp = true;
       }
@@ -306,6 +318,18 @@ class LinearSlipLaw {
 
  private:
   static constexpr int kUlps = 64;
+
+  // e^{i x}: Taylor to x^3 and x^4 for |x| <= 2^-16 (the terms left out are
+  // below 2^-70 of the result), else sin_cos.
+  static Complex<Work> small_angle(const Work& x) {
+    using std::fabs;
+    if (!(fabs(x) <= Work(0x1p-16))) {
+      const SinCos<Work> sc = sin_cos(x);
+      return {sc.cos, sc.sin};
+    }
+    const Work x2 = x * x;
+    return {1 - x2 / 2 + x2 * x2 / 24, x - x * x2 / 6};
+  }
 
   struct Term {
     Complex<Work> a;  // a e^{i theta(tau_a)}
