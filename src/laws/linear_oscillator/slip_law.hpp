@@ -25,9 +25,14 @@
 //      constant or linear), so it adds nothing to v_p'' and v_p'''.
 #pragma once
 
+// (GCC 12 warns of a memcpy overread inside small_vector's copy that cannot
+// happen: the size it assumes exceeds any vector.)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wstringop-overread"
+#include <boost/container/small_vector.hpp>
+#pragma GCC diagnostic pop
 #include <cmath>
 #include <limits>
-#include <vector>
 
 #include "laws/linear_oscillator/oscillator.hpp"
 #include "numeric/complex.hpp"
@@ -71,7 +76,16 @@ class LinearSlipLaw {
       const SinCos<Work> sc = sin_cos(theta);
       // Im(A e^{i q u}) = a sin(theta + q u); theta is rounded by up to
       // |theta| + |phase| ulps (radians per ulp).
-      terms_.push_back({{f.a * sc.cos, f.a * sc.sin}, fabs(theta) + fabs(f.phase)});
+      Term term;
+      term.a = {f.a * sc.cos, f.a * sc.sin};
+      term.arg = fabs(theta) + fabs(f.phase);
+      term.ah = term.a * o_->steady()[terms_.size()];
+      term.abs_a = fabs(f.a);
+      term.q3 = f.q * f.q * f.q;
+      term.q4 = term.q3 * f.q;
+      term.size_q3 = term.abs_a * o_->steady_abs()[terms_.size()] * term.q3;
+      term.size_q4 = term.size_q3 * f.q;
+      terms_.push_back(term);
     }
     // c1 = g(tau_a) - s r - rho^2 y_a, the coefficient of G in v, summed once
     // here: the large terms that cancel in it (a stiff spring that breaks
@@ -221,14 +235,15 @@ class LinearSlipLaw {
       if constexpr (kBounds) {  // v''' only for the bounds
         const Complex<Work> q3c = iq * (q2 + Complex<Work>{t.g2, 0});
         forced[3] += (a * q3c).im;
-        const Work abs_a = fabs(forcing[i].a);
+        const Term& term = terms_[i];
+        const Work& abs_a = term.abs_a;
         const Work mag_q0 = q * h.mag_r;
         const Work mag_q1 = q * (mag_q0 + t.mag_g);
         const Work mag_q2 = q * (mag_q1 + t.mag_dg);
         const Work mag_q3 = q * (mag_q2 + t.mag_g2);
         const Work mags[4] = {mag_q0, mag_q1, mag_q2, mag_q3};
         // A's argument theta(tau_a) is rounded by up to `arg` ulps.
-        const Work arg = terms_[i].arg, qu = q * u;
+        const Work arg = term.arg, qu = q * u;
         mag_forced_y += abs_a * h.mag_r;
         phase_y += abs_a * h.mag_r * arg;
         for (int k = 0; k < 4; ++k) {
@@ -236,12 +251,11 @@ class LinearSlipLaw {
           phase[k] += abs_a * mags[k] * arg;
         }
         // v_p = Im(A H i q e^{i q u}): v_p'' = Im(-i q^3 A H e), v_p''' = Im(q^4 A H e).
-        const Complex<Work> ahe = a * o_->steady()[i] * e;
-        const Work q3 = q * q * q, size = abs_a * o_->steady_abs()[i];
-        steady2 -= q3 * ahe.re;
-        steady3 += q3 * q * ahe.im;
-        mag_steady2 += size * q3 * (1 + arg + qu);
-        mag_steady3 += size * q3 * q * (1 + arg + qu);
+        const Complex<Work> ahe = term.ah * e;
+        steady2 -= term.q3 * ahe.re;
+        steady3 += term.q4 * ahe.im;
+        mag_steady2 += term.size_q3 * (1 + arg + qu);
+        mag_steady3 += term.size_q4 * (1 + arg + qu);
       }
     }
     // The homogeneous part's derivatives from those of G (transition.hpp),
@@ -333,7 +347,10 @@ class LinearSlipLaw {
 
   struct Term {
     Complex<Work> a;  // a e^{i theta(tau_a)}
-    Work arg;         // ulps of rounding in theta(tau_a), in radians per ulp
+    Work arg = 0;     // ulps of rounding in theta(tau_a), in radians per ulp
+    // For the bounds, once per law: A H, |a|, q^3, q^4, |a| |H| q^3, |a| |H| q^4.
+    Complex<Work> ah;
+    Work abs_a = 0, q3 = 0, q4 = 0, size_q3 = 0, size_q4 = 0;
   };
 
   const Oscillator<Work>* o_;
@@ -345,7 +362,8 @@ class LinearSlipLaw {
   Work mag_g0_ = 0;         // the magnitude of its terms
   Work c1_ = 0, e_c1_ = 0;  // g(tau_a) - s r - rho^2 y_a and its rounding bound
   Work rho_ = 0;
-  std::vector<Term> terms_;
+  // (Inline for up to four harmonics: a law is built for every slip.)
+  boost::container::small_vector<Term, 4> terms_;
 };
 
 }  // namespace frictionref::detail
