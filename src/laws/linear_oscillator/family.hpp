@@ -33,6 +33,7 @@
 #include "laws/linear_oscillator/slip_law.hpp"
 #include "numeric/first_zero.hpp"
 #include "numeric/halley_polish.hpp"
+#include "numeric/last_point.hpp"
 
 namespace frictionref::detail {
 
@@ -188,6 +189,15 @@ class LinearOscillatorFamily {
     return q;
   }
 
+  // The event search's aim for a predicted phase end (first_zero.hpp): a
+  // little past it, 2^-36 of the fastest motion's time scale, so that a
+  // prediction a few ulps early still has its root inside the aimed bracket
+  // and the polish's step from the aim stays within LinearSlipLaw::can_move.
+  Work aim_after(const std::optional<Work>& predicted) const {
+    return predicted ? Work(*predicted + Work(0x1p-36) / o_.fastest_rate())
+                     : std::numeric_limits<Work>::quiet_NaN();
+  }
+
   Oscillator<Work> o_;
   bool one_way_;  // a record's downslope block: never towards negative x
   Work tau_end_;
@@ -325,16 +335,9 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   const bool one_way = one_way_;
   // One point kept: the search's last (the bracket's end, where the polish
   // starts when it is the aim below) serves the polish and the direction.
-  struct Cached {
-    Work tau = std::numeric_limits<Work>::quiet_NaN();
-    typename NetForce<Work>::Point point;
-  } cache;
-  const auto point_at = [&net, &cache](const Work& t) -> const typename NetForce<Work>::Point& {
-    if (!(t == cache.tau)) {
-      cache.point = net.point(t);
-      cache.tau = t;
-    }
-    return cache.point;
+  LastPoint<Work, typename NetForce<Work>::Point> last;
+  const auto point_at = [&net, &last ](const Work& t) -> const auto& {
+    return last.at(t, [&net](const Work& u) { return net.point(u); });
   };
   const auto jet_of = [&net, &point_at, one_way](const Work& t) {
     const auto& p = point_at(t);
@@ -355,8 +358,7 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   // The predicted breakaway and, a little past it, the search's aim (as for
   // slips: the bracket then ends where the polish starts).
   const std::optional<Work> predicted = stick_guess_.after(last_stop_sign_, stick_start_);
-  const Work aim = predicted ? Work(*predicted + Work(0x1p-36) / o_.fastest_rate())
-                             : std::numeric_limits<Work>::quiet_NaN();
+  const Work aim = aim_after(predicted);
   const ZeroBracket<Work> bracket =
       Search::run(search, tau, search.jet(tau), to, res, res, step_budget(tau, to), aim);
   if (!bracket.found) return result;
@@ -400,17 +402,12 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   LinearSlipLaw<Work> law(o_, start.sign, start.tau, omega * start.x, start.v);
   // The points with error bounds, the last one kept: the search's first
   // step often lands where the noise level after a start was just taken
-  // (one resolution on), and the stop's point is the bracket's end.
-  struct Bounded {
-    Work tau = std::numeric_limits<Work>::quiet_NaN();
-    typename LinearSlipLaw<Work>::Point point;
-  } bounded;
-  const auto bounded_point = [&law, &bounded ](const Work& t) -> const auto& {
-    if (!(t == bounded.tau)) {
-      bounded.point = law.point(t);
-      bounded.tau = t;
-    }
-    return bounded.point;
+  // (one resolution on), and the stop's point is the bracket's end (or is
+  // moved from it).
+  using SlipPoint = typename LinearSlipLaw<Work>::Point;
+  LastPoint<Work, SlipPoint> bounded;
+  const auto bounded_point = [&law, &bounded](const Work& t) -> const SlipPoint& {
+    return bounded.at(t, [&law](const Work& u) { return law.point(u); });
   };
   const auto jet_at = [&law, &bounded_point](const Work& t) { return law.jet(bounded_point(t)); };
   auto search = probe(jet_at, [&law](const Work& t, const Jet<Work>& at, const Work& h) {
@@ -419,16 +416,9 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   const Work s(start.sign);
   // The root solvers ask for f and f' at the same time, one after the other:
   // one evaluation serves both.
-  struct Cached {
-    Work tau = std::numeric_limits<Work>::quiet_NaN();
-    typename LinearSlipLaw<Work>::Point point;
-  } cache;
-  const auto at = [&law, &cache](const Work& t) -> const typename LinearSlipLaw<Work>::Point& {
-    if (!(t == cache.tau)) {
-      cache.point = law.point(t, /*with_bounds=*/false);
-      cache.tau = t;
-    }
-    return cache.point;
+  LastPoint<Work, SlipPoint> cache;
+  const auto at = [&law, &cache](const Work& t) -> const SlipPoint& {
+    return cache.at(t, [&law](const Work& u) { return law.point(u, /*with_bounds=*/false); });
   };
   const auto f = [&at, &s](const Work& t) { return s * at(t).v; };
   const auto df = [&at, &s](const Work& t) { return s * at(t).d1; };
@@ -497,8 +487,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // (duration_guess.hpp), and a little past it the search's aim
   // (first_zero.hpp): in a steady state its bracket then ends at the aim.
   const std::optional<Work> predicted = slip_guess_.after(start.sign, start.tau);
-  const Work aim = predicted ? Work(*predicted + Work(0x1p-36) / o_.fastest_rate())
-                             : std::numeric_limits<Work>::quiet_NaN();
+  const Work aim = aim_after(predicted);
   SlipEnd<Work> result;
   bool touched_against = false;  // the last touch had v resolvably against the slip
   // Touches that follow each other within 64 resolutions (no progress) are
@@ -510,7 +499,8 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       // The law's segment of the record is over: the next one's law, from
       // the state there.
       law = law.continued_at(from);
-      bounded.tau = cache.tau = std::numeric_limits<Work>::quiet_NaN();
+      bounded.forget();
+      cache.forget();
       at_from = law.jet(bounded_point(from));
     }
     if (blind > 0) at_from.f = 0;  // exactly: the slip starts (or goes on) from v = 0
@@ -566,9 +556,9 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     const Work root =
         bracket.at_lo.f > 0 ? root_in(bracket, cached_jet, third, f, df, guess) : bracket.hi;
     // With its rounding bounds: N at the stop and whether v turned back.
-    const auto q = bounded.tau == root || !law.can_move(bounded.tau, root)
+    const auto q = bounded.tau() == root || !law.can_move(bounded.tau(), root)
                        ? bounded_point(root)
-                       : law.moved(bounded.point, root);
+                       : law.moved(bounded.point(), root);
     const Work eps = std::numeric_limits<Work>::epsilon();
     const Work damping = 2 * o_.sigma() * q.v;
     ForceAtStop at_stop;
