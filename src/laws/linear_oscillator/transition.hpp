@@ -251,15 +251,22 @@ class TransitionFunctions {
     t.mag_g = fabs(t.g) * (1 + arg);
     t.mag_dg = even * (1 + arg) + sigma_ * t.mag_g;
     t.mag_phi11 = t.mag_dg;
-    // (1 - Phi11) / rho^2 unless Phi11 is near 1 with the rates well apart
-    // (a slow overdamped root, or rho = 0).
-    if (rho2_ > 0 && (t.phi11 <= Work(0.5) || x < 1)) {
+    // (1 - Phi11) / rho^2 where 1 - Phi11 keeps its digits: Phi11 <= 1/2, or
+    // 1 - Phi11 >= x / 2, the cancellation the rates' form below suffers
+    // (its two phi1 differ by about x / 2 when x is small). Otherwise (a slow
+    // overdamped root, or rho = 0) the rates' form. (With x < 1 alone as the
+    // test, a damper with sigma^2 = 1e297 rho^2 (rho^2 = 3.5e-295) took 1 -
+    // Phi11 ~ rho^2 from its rounding of 1e-19: G1 came out 1e275, the ramp's
+    // G2 1e572, and a slip ended at x = -inf; found by fuzzing.)
+    const bool rates_form = !(rho2_ > 0) || (t.phi11 > Work(0.5) && x > 0 && 1 - t.phi11 < x / 2);
+    if (!rates_form) {
       t.g1 = (1 - t.phi11) / rho2_;
       t.mag_g1 = (1 + t.mag_phi11) / rho2_;
       ramp_from_g1(u, t);
     } else {
       // Slow root: G1 = u [phi1(-k1 u) - phi1(-k2 u)] / (k2 - k1), with
-      // (k2 - k1) u = 2 mu u >= 1, and likewise
+      // (k2 - k1) u = 2 mu u = x (>= 1, or below 1 where 1 - Phi11 cancels
+      // worse), and likewise
       // G2 = u^2 [phi2(-k1 u) - phi2(-k2 u)] / (k2 - k1).
       const Work p1 = phi1(-k1_ * u);
       const Work p2 = phi1(-k2_ * u);
