@@ -57,14 +57,6 @@ class DurationGuess {
     return start + best->duration;
   }
 
-  // The same, if it lies in (lo, hi).
-  std::optional<Work> inside(int direction, const Work& start, const Work& lo,
-                             const Work& hi) const {
-    const std::optional<Work> guess = after(direction, start);
-    if (guess && *guess > lo && *guess < hi) return guess;
-    return std::nullopt;
-  }
-
  private:
   static constexpr std::size_t kDepth = 4;
   struct Entry {
@@ -92,5 +84,16 @@ class DurationGuess {
   std::vector<double> q_;
   History positive_, negative_;
 };
+
+// Where the polish of a bracket [lo, hi] starts: at the search's aim where
+// the bracket ends there (its point is at hand), else at the prediction where
+// it lies strictly inside, else nowhere in particular (the secant decides).
+template <class Work>
+std::optional<Work> polish_start(const std::optional<Work>& predicted, const Work& aim,
+                                 const Work& lo, const Work& hi) {
+  if (hi == aim) return aim;
+  if (predicted && *predicted > lo && *predicted < hi) return predicted;
+  return std::nullopt;
+}
 
 }  // namespace frictionref::detail

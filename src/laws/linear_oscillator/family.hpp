@@ -364,25 +364,18 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   if (!bracket.found) return result;
   // n > 0 or < 0 beyond the band's edge at the bracket's end.
   const Work n_beyond = point_at(bracket.hi).n;
-  const auto at = [&jet_of](const Work& t) { return jet_of(t); };
-  const auto f = [&at](const Work& t) { return at(t).f; };
-  const auto df = [&at](const Work& t) { return at(t).d1; };
+  const auto f = [&jet_of](const Work& t) { return jet_of(t).f; };
+  const auto df = [&jet_of](const Work& t) { return jet_of(t).d1; };
   // The crossing of f = 0 (not f + margin) inside the bracket.
   ZeroBracket<Work> crossing = bracket;
   crossing.at_lo.f -= margin;
   crossing.at_hi.f -= margin;
-  const auto jet_unshifted = [&at](const Work& t) { return at(t); };
   Work root;
   if (!(crossing.at_lo.f > 0)) {
     root = crossing.lo;  // |N| reached Rs within rounding before the certain excess
   } else {
-    std::optional<Work> guess;
-    if (crossing.hi == aim)
-      guess = aim;
-    else if (predicted && *predicted > crossing.lo && *predicted < crossing.hi)
-      guess = predicted;
-    root = root_in(crossing, jet_unshifted, third_of(crossing.at_lo, crossing.hi - crossing.lo), f,
-                   df, guess);
+    root = root_in(crossing, jet_of, third_of(crossing.at_lo, crossing.hi - crossing.lo), f, df,
+                   polish_start(predicted, aim, crossing.lo, crossing.hi));
     if (root < tau_end_) stick_guess_.remember(last_stop_sign_, stick_start_, root);
   }
   result.found = root < tau_end_;
@@ -539,11 +532,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     // accepts after that one evaluation, a few ulps from the root: the point
     // at the stop is then moved there from it (LinearSlipLaw::moved) instead
     // of evaluated afresh.
-    std::optional<Work> guess;
-    if (bracket.hi == aim)
-      guess = aim;
-    else if (predicted && *predicted > bracket.lo && *predicted < bracket.hi)
-      guess = predicted;
+    const std::optional<Work> guess = polish_start(predicted, aim, bracket.lo, bracket.hi);
     const auto cached_jet = [&](const Work& t) {
       return law.jet(guess && t == *guess ? bounded_point(t) : at(t));
     };

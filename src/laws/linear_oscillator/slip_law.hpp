@@ -174,8 +174,7 @@ class LinearSlipLaw {
         growth;
     q.e_d2 = (p.e_d2 + sup3 * a) * growth;
     q.e_d3 = std::numeric_limits<Work>::infinity();
-    const Work w = fabs(q.d1) + q.e_d1, dw = fabs(q.d2) + q.e_d2;
-    q.tail = sqrt(dw * dw + rho2 * w * w) * (1 + 16 * eps);
+    q.tail = tail_of(q);
     q.tail2 = std::numeric_limits<Work>::infinity();
     return q;
   }
@@ -302,8 +301,7 @@ class LinearSlipLaw {
     p.e_d2 = k * mag_d2 + eps * phase[2] + c1_error(g2, mag_g2);
     p.e_d3 = k * mag_d3 + eps * phase[3] + c1_error(g3, mag_g3);
     // S = sqrt(w'^2 + rho^2 w^2) at tau, w = v' (see the top of this file).
-    const Work w = fabs(p.d1) + p.e_d1, dw = fabs(p.d2) + p.e_d2;
-    p.tail = sqrt(dw * dw + rho2 * w * w) * (1 + 16 * eps);
+    p.tail = tail_of(p);
     // (B): z_h = v'' - v_p'', z_h' = v''' - v_p''' at tau.
     const Work z = fabs(p.d2 - steady2) + p.e_d2 + k * mag_steady2;
     const Work dz = fabs(p.d3 - steady3) + p.e_d3 + k * mag_steady3;
@@ -332,6 +330,15 @@ class LinearSlipLaw {
 
  private:
   static constexpr int kUlps = 64;
+
+  // Bound (A)'s S = sqrt(v''^2 + rho^2 v'^2) at a point, from v', v'' and
+  // their rounding bounds (the top of this file).
+  Work tail_of(const Point& p) const {
+    using std::fabs;
+    using std::sqrt;
+    const Work w = fabs(p.d1) + p.e_d1, dw = fabs(p.d2) + p.e_d2;
+    return sqrt(dw * dw + o_->rho2() * w * w) * (1 + 16 * std::numeric_limits<Work>::epsilon());
+  }
 
   // e^{i x}: Taylor to x^3 and x^4 for |x| <= 2^-16 (the terms left out are
   // below 2^-70 of the result), else sin_cos.
