@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "frictionref/model.hpp"
@@ -48,9 +49,14 @@ TEST(DurationGuess, TakesThePhaseAWholeNumberOfPeriodsBack) {
   single.remember(1, 0 * period, 0 * period + 1.25L);
   single.remember(1, 1 * period, 1 * period + 1.75L);
   EXPECT_NEAR(static_cast<double>(*single.after(1, 2 * period) - 2 * period), 1.75, 1e-15);
-  // inside(): only strictly within the bracket.
-  EXPECT_TRUE(single.inside(1, 2 * period, 2 * period + 1, 2 * period + 2));
-  EXPECT_FALSE(single.inside(1, 2 * period, 2 * period + 1.75L, 2 * period + 2));
+  // The polish starts at the prediction only strictly within the bracket
+  // (no aim here), and at the aim where the bracket ends there.
+  const std::optional<long double> predicted = single.after(1, 2 * period);
+  const long double no_aim = std::numeric_limits<long double>::quiet_NaN();
+  EXPECT_TRUE(detail::polish_start(predicted, no_aim, 2 * period + 1, 2 * period + 2));
+  EXPECT_FALSE(detail::polish_start(predicted, no_aim, 2 * period + 1.75L, 2 * period + 2));
+  EXPECT_EQ(*detail::polish_start(predicted, 2 * period + 2, 2 * period + 1, 2 * period + 2),
+            2 * period + 2);
 }
 
 // A slip of a spring-damper oscillator with static friction and a second

@@ -27,6 +27,22 @@ struct CountCase {
 
 constexpr double kThousandPeriods = 2000 * M_PI;
 
+// Runs the engine to t_end and prints its counts.
+Summary counted_run(const char* name, const Model& model, double t_end) {
+  ExactEngine engine(model, t_end);
+  Phase phase;
+  while (engine.next(phase)) {
+  }
+  const Summary& s = engine.summary();
+  std::printf(
+      "[ counts   ] %-42s stops %6llu  root calls %6llu  sign tests %6llu  predicted %6llu\n", name,
+      static_cast<unsigned long long>(s.stops),
+      static_cast<unsigned long long>(s.root_function_calls),
+      static_cast<unsigned long long>(s.sign_tests),
+      static_cast<unsigned long long>(s.predicted_stops));
+  return s;
+}
+
 const CountCase kCases[] = {
     {"seed 10.1 (lambda 0.3), 1000 periods", 0.3, 0, kThousandPeriods, 2064, 4000},
     {"seed 10.2 (lambda 0.7), 1000 periods", 0.7, 0, kThousandPeriods, 2013, 4000},
@@ -41,17 +57,7 @@ TEST(RootCalls, DoNotGoUpOnFixedCases) {
     Model model;
     model.friction = c.lambda;
     model.v0 = c.v0;
-    ExactEngine engine(model, c.t_end);
-    Phase phase;
-    while (engine.next(phase)) {
-    }
-    const Summary& s = engine.summary();
-    std::printf(
-        "[ counts   ] %-42s stops %6llu  root calls %6llu  sign tests %6llu  predicted %6llu\n",
-        c.name, static_cast<unsigned long long>(s.stops),
-        static_cast<unsigned long long>(s.root_function_calls),
-        static_cast<unsigned long long>(s.sign_tests),
-        static_cast<unsigned long long>(s.predicted_stops));
+    const Summary s = counted_run(c.name, model, c.t_end);
     EXPECT_EQ(s.termination, Termination::reached_end);
     EXPECT_LE(s.root_function_calls, c.max_root_calls);
     EXPECT_LE(s.sign_tests, c.max_sign_tests);
@@ -108,15 +114,7 @@ TEST(RootCalls, GeneralModelsDoNotGoUp) {
   };
   for (const GeneralCase& c : cases) {
     SCOPED_TRACE(c.name);
-    ExactEngine engine(c.model, kThousandPeriods);
-    Phase phase;
-    while (engine.next(phase)) {
-    }
-    const Summary& s = engine.summary();
-    std::printf("[ counts   ] %-42s stops %6llu  root calls %6llu  sign tests %6llu\n", c.name,
-                static_cast<unsigned long long>(s.stops),
-                static_cast<unsigned long long>(s.root_function_calls),
-                static_cast<unsigned long long>(s.sign_tests));
+    const Summary s = counted_run(c.name, c.model, kThousandPeriods);
     EXPECT_EQ(s.termination, Termination::reached_end);
     EXPECT_LE(s.root_function_calls, c.max_root_calls);
     EXPECT_LE(s.sign_tests, c.max_sign_tests);
