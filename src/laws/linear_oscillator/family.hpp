@@ -213,6 +213,21 @@ template <class Real>
 auto LinearOscillatorFamily<Real>::at_rest_two_way(const Work& tau, const Work& y,
                                                    const ForceAtStop* at_stop) const -> AtRest {
   using std::fabs;
+  // A stop whose own N (from the slip) lies outside the band, or inside it,
+  // by more than its rounding and than any move of N within the time
+  // resolution, bounded without the forcing's phase (|n'| <= sum |a| q,
+  // |n''| <= sum |a| q^2, doubled for their rounding), is decided without N
+  // from the position, which costs a sin_cos per harmonic: a reversal, or a
+  // stop well inside the band. (A record's N moves by its segment's slope
+  // and jumps at its ends: the full rule below.)
+  if (at_stop && !o_.record().present() && fabs(at_stop->n) > at_stop->e_n) {
+    const Work res = Traits::time_resolution(tau);
+    const Forcing<Work>& forcing = o_.forcing();
+    const Work tolerance =
+        2 * (forcing.bound(1) * res + forcing.bound(2) * res * res / 2) + at_stop->e_excess;
+    if (at_stop->excess > tolerance) return {at_stop->n > 0 ? 1 : -1, false};
+    if (-at_stop->excess > tolerance) return {0, false};
+  }
   const NetForce<Work> net(o_, y, o_.record().piece_at(tau));
   auto p = net.point(tau);
   const Work rs = o_.rs();
