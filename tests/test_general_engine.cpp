@@ -514,8 +514,13 @@ TEST(GeneralEngine, FarEquilibriumReversesWithTheHarmonic) {
 // about twice its own rounding there. At the end of a jump over v's noise
 // the slip's v was twice its rounding against the slip and not turning back,
 // while the at-rest rule (N within rounding, rising) said "on": touch after
-// touch one resolution apart until the cap. The mass now rests there, and
-// the run reaches its end, at the equilibrium to the rounding of x.
+// touch one resolution apart until the cap. The run now reaches its end, at
+// the equilibrium to the rounding of x, in a few phases per period. Whether
+// the mass rests there or goes on reversing is rounding's choice (its
+// velocity is twice its own rounding; with Rs = 0 the exact motion never
+// sticks): the engine of 2026-11-26 rested, the search's longer steps
+// since then reverse; either is accepted, and a rest must be at the
+// equilibrium.
 TEST(GeneralEngine, FarEquilibriumTurnedAgainstTheSlipRests) {
   Model m;
   m.mass = 1;
@@ -533,15 +538,12 @@ TEST(GeneralEngine, FarEquilibriumTurnedAgainstTheSlipRests) {
   ASSERT_EQ(s.summary.termination, Termination::reached_end) << s.summary.message;
   const double periods = (t_end - m.t0) * m.omega / (2 * pi);
   EXPECT_LE(s.phases.size(), static_cast<std::size_t>(4 * (periods + 1)));
-  bool rested = false;
   for (const Phase& p : s.phases) {
     if (p.kind != PhaseKind::stick) continue;
-    rested = true;
     // |N| <= Rs = 0 to the rounding of k x (x within 4 ulps of F0 / k)
     EXPECT_LE(std::fabs(p.x_begin - m.force_offset),
               4 * std::numeric_limits<double>::epsilon() * m.force_offset);
   }
-  EXPECT_TRUE(rested);
   EXPECT_LE(std::fabs(s.phases.back().x_end - m.force_offset),
             4 * std::numeric_limits<double>::epsilon() * m.force_offset);
 }

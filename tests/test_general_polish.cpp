@@ -59,6 +59,20 @@ TEST(DurationGuess, TakesThePhaseAWholeNumberOfPeriodsBack) {
             2 * period + 2);
 }
 
+// The first step of the twin's search comes from the same twin as the
+// duration (none without a remembered one, or from a phase without it).
+TEST(DurationGuess, FirstStepFromTheSameTwin) {
+  const long double period = 2 * M_PI;
+  DurationGuess<long double> guess({1.0, 2.5});
+  EXPECT_EQ(guess.first_step(1, 0.0L), 0.0L);
+  guess.remember(1, 0 * period, 0 * period + 1.25L, 0.5L);
+  guess.remember(1, 1 * period, 1 * period + 1.75L, 0.75L);
+  guess.remember(1, 2 * period, 2 * period + 1.25L);  // no first step
+  EXPECT_EQ(guess.first_step(1, 3 * period), 0.75L);  // the twin two periods back
+  EXPECT_EQ(guess.first_step(1, 4 * period), 0.0L);   // its twin had none
+  EXPECT_EQ(guess.first_step(-1, 3 * period), 0.0L);  // the other direction has none
+}
+
 // A slip of a spring-damper oscillator with static friction and a second
 // harmonic, from rest at tau_a: the point with bounds at tau0, moved by
 // delta, lies within its bounds of the 50-digit closed form at tau0 + delta.

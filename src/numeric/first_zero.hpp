@@ -20,9 +20,14 @@
 //   * one extremum: f'' keeps its sign, so f' has at most one zero; it is
 //     found by bracketing and f there decides (a tangential zero is found
 //     here: f reaches 0 at an extremum without changing sign);
-// and otherwise halves h. Steps below the time resolution are sign-tested
-// (the engine resolves nothing shorter). The result is a bracket on which f
-// is decreasing with f(lo) > 0 >= f(hi), for the root solver.
+//   * on a step to the caller's aim only: monotonicity from both ends, f'
+//     bounded above by the expansion from a on [a, s] and by the one from
+//     a + h backwards on [s, a + h] (falls_throughout);
+// and otherwise shortens h: to the longest step that exclusion or f's slope
+// proves with the same bounds, if over h/2, else to h/2. Steps below the
+// time resolution are sign-tested (the engine resolves nothing shorter). The
+// result is a bracket on which f is decreasing with f(lo) > 0 >= f(hi), for
+// the root solver.
 #pragma once
 
 #include <cmath>
@@ -45,6 +50,7 @@ struct ZeroBracket {
   Work hi = 0;             // f(hi) <= 0, f decreasing on [lo, hi]; or, after a step at the
                            // resolution, f(hi) within its rounding error of 0
   Jet<Work> at_lo, at_hi;  // the jets there, for the root solver's first guess
+  Work first_step = 0;     // the length of the search's first proven step (0: none)
 };
 
 // Thrown when the search makes no progress (a function at the level of its
@@ -72,8 +78,11 @@ class FirstZeroSearch {
   // `aim`, where given, is a point the caller expects the zero just before
   // (a predicted stop, a little late): a step that would pass over it ends
   // there instead, so that a bracket closed by that step ends at it and the
-  // caller's polish starts from a point already evaluated. Only a step's
-  // length changes; what each step proves does not.
+  // caller's polish starts from a point already evaluated. `first_step`,
+  // where positive, is the length to try first (the first proven step of
+  // the search the caller expects this one to repeat) instead of a guess
+  // from the bounds. Only a step's length changes; what each step proves
+  // does not.
   static constexpr std::int64_t kDefaultMaxSteps = 100000;
   static constexpr std::int64_t kMaxStepsAtResolution = 100000;
 
@@ -81,7 +90,21 @@ class FirstZeroSearch {
   static ZeroBracket<Work> run(Probe& probe, const Work& a, const Jet<Work>& at_a, const Work& end,
                                const Work& blind, const Work& resolution,
                                std::int64_t max_steps = kDefaultMaxSteps,
-                               const Work& aim = std::numeric_limits<Work>::quiet_NaN()) {
+                               const Work& aim = std::numeric_limits<Work>::quiet_NaN(),
+                               const Work& first_step = 0) {
+    Work first_proven = 0;
+    ZeroBracket<Work> result =
+        search(probe, a, at_a, end, blind, resolution, max_steps, aim, first_step, first_proven);
+    result.first_step = first_proven;
+    return result;
+  }
+
+ private:
+  template <class Probe>
+  static ZeroBracket<Work> search(Probe& probe, const Work& a, const Jet<Work>& at_a,
+                                  const Work& end, const Work& blind, const Work& resolution,
+                                  std::int64_t max_steps, const Work& aim, const Work& first_step,
+                                  Work& first_proven) {
     using std::fabs;
     Work cur = a;
     Jet<Work> j = at_a;
@@ -102,17 +125,49 @@ class FirstZeroSearch {
     }
     // A first step where the cubic term of the Taylor bound is comparable to
     // the value (halving from the whole interval would cost a dozen tries).
+    // The bound may grow with the step (a law's bound from the state at cur
+    // alone): over a long search interval it is guessed again from the bound
+    // over the first guess.
     Work h = end - cur;
-    {
+    const bool hinted = first_step > 0 && first_step < h;
+    if (hinted) {
+      h = first_step;
+    } else {
       using std::cbrt;
-      const Work m = probe.third_bound(cur, j, h);
       const Work scale = fabs(j.f) + fabs(j.d1) + fabs(j.d2);
+      const Work m = probe.third_bound(cur, j, h);
       if (m > 0 && scale > 0) {
-        const Work guess = 2 * cbrt(6 * scale / m);
-        if (guess < h) h = guess;
+        Work guess = 2 * cbrt(6 * scale / m);
+        if (guess < h) {
+          const Work m_guess = probe.third_bound(cur, j, guess);
+          if (m_guess > 0 && m_guess < m) guess = 2 * cbrt(6 * scale / m_guess);
+          if (guess < h) h = guess;
+        }
       }
     }
     const Work first = cur;
+    // The first proven step, for the caller to pass on. A hinted step that
+    // one 1/8 longer would also have been proven by is not passed on: the
+    // hint was short (a transient's), and passed on it would stay short.
+    const auto note_first = [&](const Work& step, const Jet<Work>& at_first) {
+      if (!(cur == first && first_proven == 0)) return;
+      first_proven = step;
+      if (!(hinted && step == first_step)) return;
+      const Work longer = step + step / 8;
+      if (!(longer < end - first)) return;
+      const Work m = probe.third_bound(first, at_first, longer);
+      if (stays_positive(at_first, m, Work(0), longer) || slope_above_zero(at_first, m, longer) ||
+          slope_below_zero(at_first, m, longer))
+        first_proven = 0;
+    };
+    // The jet at the aim, once evaluated (a failed proof from both ends may
+    // evaluate it before the step that closes the bracket there).
+    bool have_aim_jet = false;
+    Jet<Work> aim_jet;
+    const auto jet_at = [&](const Work& t) {
+      if (have_aim_jet && t == aim) return aim_jet;
+      return probe.jet(t);
+    };
     while (cur < end) {
       // A point stepped to where f is within twice its rounding of zero is a
       // zero, as at the resolution's sign test below: f cannot be told from
@@ -130,30 +185,33 @@ class FirstZeroSearch {
       const Work b = aimed ? aim : h == end - cur ? end : cur + h;
       const Work m = probe.third_bound(cur, j, h);
       if (stays_positive(j, m, Work(0), h)) {
+        note_first(h, j);
         cur = b;
-        if (cur < end) j = probe.jet(cur);
+        if (cur < end) j = jet_at(cur);
         h *= 2;
         continue;
       }
       if (slope_below_zero(j, m, h)) {  // f decreasing on [cur, b]
-        const Jet<Work> jb = probe.jet(b);
+        const Jet<Work> jb = jet_at(b);
         if (!(jb.f > 0)) return {true, cur, b, j, jb};
         // Still positive: no zero up to b. Longer steps next (a slow decay
         // towards zero, as an overdamped approach to equilibrium, would
         // otherwise be walked at a fixed step until the step cap).
+        note_first(h, j);
         cur = b;
         j = jb;
         h *= 2;
         continue;
       }
       if (slope_above_zero(j, m, h)) {  // f increasing: no zero after f(cur) >= 0
+        note_first(h, j);
         cur = b;
-        if (cur < end) j = probe.jet(cur);
+        if (cur < end) j = jet_at(cur);
         h *= 2;
         continue;
       }
       if (fabs(j.d2) - j.e2 > m * h) {  // f' monotone: at most one extremum
-        const Jet<Work> jb = probe.jet(b);
+        const Jet<Work> jb = jet_at(b);
         const bool falls_first = j.d1 < 0;
         if ((j.d1 < 0) == (jb.d1 < 0)) {  // no extremum inside: f monotone
           if (falls_first && !(jb.f > 0)) return {true, cur, b, j, jb};
@@ -176,10 +234,29 @@ class FirstZeroSearch {
             return {true, cur, te, j, je};
           }
         }
+        note_first(h, j);
         cur = b;
         j = jb;
         h *= 2;
         continue;
+      }
+      // A step to the aim that nothing above proves, from a point where f
+      // falls: f' may still be proven negative throughout from both ends
+      // (in a steady state: from just past f's maximum to the predicted
+      // stop, a step the expansion from its start alone cannot take).
+      if (aimed && j.d1 + j.e1 < 0) {
+        if (!have_aim_jet) {
+          aim_jet = probe.jet(aim);
+          have_aim_jet = true;
+        }
+        if (falls_throughout(j, aim_jet, m, h)) {
+          if (!(aim_jet.f > 0)) return {true, cur, b, j, aim_jet};
+          note_first(h, j);
+          cur = b;
+          j = aim_jet;
+          h *= 2;
+          continue;
+        }
       }
       if (h <= resolution) {
         // (Never a step below the resolution, save the last one to `end`:
@@ -196,7 +273,7 @@ class FirstZeroSearch {
         // stall found by fuzzing). Past it, f - e0 > e0 makes the next
         // exclusion step about e0 / |f'| long. The bracket's hi may then
         // have f > 0.
-        const Jet<Work> jb = probe.jet(b);
+        const Jet<Work> jb = jet_at(b);
         if (counts_as_zero(jb)) {
           // Falling into the noise while convex: a tangency (v grazing 0)
           // or a pair of zeros round a minimum. The minimum decides, not the
@@ -219,11 +296,12 @@ class FirstZeroSearch {
         j = jb;
         continue;
       }
-      h /= 2;
+      h = shortened(probe, cur, j, h, m);
     }
     return {};
   }
 
+ public:
   // The sign test's threshold, wherever the search evaluates f: a value
   // within twice its rounding error of zero counts as zero.
   static bool counts_as_zero(const Jet<Work>& j) { return !(j.f > 2 * j.e0); }
@@ -256,6 +334,33 @@ class FirstZeroSearch {
     return p(r) > margin;
   }
 
+  // f' < 0 on [a, b], h = b - a, from the jets at both ends and m >= sup
+  // |f'''| on [a, b]. By Taylor from either end, f' lies below
+  //   U_a(u) = (f'(a) + e1) + (f''(a) + e2) u + m u^2 / 2        (u = t - a),
+  //   U_b(w) = (f'(b) + e1) - (f''(b) - e2) w + m w^2 / 2        (w = b - t);
+  // both are convex, so U_a < 0 on [0, s] and U_b < 0 on [0, w >= h - s] follow
+  // from their values at the ends of those ranges. s is chosen between where
+  // U_b can end (h - its root) and where U_a does (its root); only the four
+  // checked values, not the roots, prove anything.
+  static bool falls_throughout(const Jet<Work>& ja, const Jet<Work>& jb, const Work& m,
+                               const Work& h) {
+    using std::fabs;
+    const Work a1 = ja.d1 + ja.e1, a2 = ja.d2 + ja.e2;
+    const Work b1 = jb.d1 + jb.e1, b2 = -(jb.d2 - jb.e2);
+    if (!(a1 < 0 && b1 < 0 && h > 0)) return false;
+    const Work ra = negative_up_to(a1, a2, m), rb = negative_up_to(b1, b2, m);
+    if (!(ra + rb > h)) return false;
+    const Work from = h - rb > 0 ? Work(h - rb) : Work(0), to = ra < h ? ra : h;
+    const Work eps = std::numeric_limits<Work>::epsilon();
+    // (w a little over h - s: the two ranges overlap despite rounding.)
+    const Work s = (from + to) / 2, w = (h - s) + 4 * eps * h;
+    const Work ua = a1 + s * (a2 + m * s / 2), ub = b1 + w * (b2 + m * w / 2);
+    // Rounding of the two quadratics, as in stays_positive.
+    const Work margin_a = 8 * eps * (fabs(a1) + fabs(a2) * s + m * s * s / 2);
+    const Work margin_b = 8 * eps * (fabs(b1) + fabs(b2) * w + m * w * w / 2);
+    return ua < -margin_a && ub < -margin_b;
+  }
+
   // f' < 0 on [a, a + h]: its upper bound (convex in u) is < 0 at both ends.
   static bool slope_below_zero(const Jet<Work>& j, const Work& m, const Work& h) {
     const Work c1 = j.d1 + j.e1;
@@ -271,6 +376,56 @@ class FirstZeroSearch {
   }
 
  private:
+  // The first u > 0 where c1 + c2 u + m u^2 / 2 reaches 0 (c1 < 0, m >= 0):
+  // its positive root, in the form without cancellation; infinite if none.
+  static Work negative_up_to(const Work& c1, const Work& c2, const Work& m) {
+    using std::sqrt;
+    if (!(m > 0)) return c2 > 0 ? Work(-c1 / c2) : std::numeric_limits<Work>::infinity();
+    const Work root = sqrt(c2 * c2 - 2 * m * c1);
+    return c2 > 0 ? Work(-2 * c1 / (c2 + root)) : Work((root - c2) / m);
+  }
+
+  // The next step after one of length h proved nothing, and m the bound on
+  // it (valid on any shorter step): the longest step that the bounds at cur
+  // prove, by exclusion or by f's slope, if longer than h/2, else h/2. The
+  // candidates are where each test's polynomial with this m reaches 0: the
+  // slope's quadratics in closed form, the exclusion cubic by Newton's
+  // method from h (it falls there); each is taken 2^-10 short and checked
+  // with its own, smaller, bound, as the step itself will check it. No
+  // evaluation of f: in a steady state the step from a slip's start then
+  // reaches past the top of f's hump, from where the step to the aim is
+  // proven from both ends.
+  template <class Probe>
+  static Work shortened(Probe& probe, const Work& cur, const Jet<Work>& j, const Work& h,
+                        const Work& m) {
+    Work longest = h / 2;
+    const Work shrink = 1 - Work(0x1p-10);
+    const auto consider = [&](const Work& reach,
+                              bool (*proves)(const Jet<Work>&, const Work&, const Work&)) {
+      const Work step = reach * shrink;
+      if (!(step > longest && step < h)) return;
+      if (proves(j, probe.third_bound(cur, j, step), step)) longest = step;
+    };
+    const Work up = j.d1 - j.e1, down = j.d1 + j.e1;
+    if (up > 0) consider(negative_up_to(-up, -(j.d2 - j.e2), m), slope_above_zero);
+    if (down < 0) consider(negative_up_to(down, j.d2 + j.e2, m), slope_below_zero);
+    // p(u) = c0 + c1 u + c2 u^2 / 2 - m u^3 / 6 (stays_positive's), from u = h down.
+    const Work c0 = j.f - j.e0, c1 = j.d1 - j.e1, c2 = j.d2 - j.e2;
+    if (c0 > 0) {
+      Work u = h;
+      for (int i = 0; i < 8; ++i) {
+        const Work p = c0 + u * (c1 + u * (c2 / 2 - m * u / 6));
+        const Work dp = c1 + u * (c2 - m * u / 2);
+        if (!(p < 0 && dp < 0)) break;  // past the fall (or at its root)
+        u -= p / dp;
+      }
+      consider(u, [](const Jet<Work>& jet, const Work& bound, const Work& step) {
+        return stays_positive(jet, bound, Work(0), step);
+      });
+    }
+    return longest;
+  }
+
   // The zero of f' on [lo, hi], where it changes sign once (rising if
   // f falls first).
   template <class Probe>

@@ -10,7 +10,8 @@
 // twin. It is only a guess: it is used where it lies strictly inside the
 // certified bracket, and the polish's own error bound, not the guess,
 // decides the root (the seed's laws predict their stops in closed form
-// instead, docs/theory.md 3.5).
+// instead, docs/theory.md 3.5). The same twin also lends its search's first
+// proven step (first_zero.hpp), which the new search tries first.
 #pragma once
 
 #include <array>
@@ -29,10 +30,11 @@ class DurationGuess {
 
   // direction: +1 or -1 (a slip's sign; for a stick, that of the slip that
   // ended in it); 0 is not remembered.
-  void remember(int direction, const Work& start, const Work& end) {
+  // first_step: the length of its search's first proven step (0: none).
+  void remember(int direction, const Work& start, const Work& end, const Work& first_step = 0) {
     if (direction == 0) return;
     History& h = history(direction);
-    h.entries[h.next] = {start, end - start};
+    h.entries[h.next] = {start, end - start, first_step};
     h.next = (h.next + 1) % kDepth;
     if (h.size < kDepth) ++h.size;
   }
@@ -40,7 +42,31 @@ class DurationGuess {
   // start + the chosen duration: where the phase that began at `start`
   // should end.
   std::optional<Work> after(int direction, const Work& start) const {
-    if (direction == 0) return std::nullopt;
+    const Entry* e = twin(direction, start);
+    if (!e) return std::nullopt;
+    return start + e->duration;
+  }
+
+  // The first proven step of the twin's search (0 where there is none).
+  Work first_step(int direction, const Work& start) const {
+    const Entry* e = twin(direction, start);
+    return e ? e->first_step : Work(0);
+  }
+
+ private:
+  static constexpr std::size_t kDepth = 4;
+  struct Entry {
+    Work start = 0, duration = 0, first_step = 0;
+  };
+  struct History {
+    std::array<Entry, kDepth> entries{};
+    std::size_t next = 0, size = 0;
+  };
+
+  // Of the last phases alike, the one whose start lies the nearest to a
+  // whole number of periods back (none without a positive duration).
+  const Entry* twin(int direction, const Work& start) const {
+    if (direction == 0) return nullptr;
     const History& h = history(direction);
     const Entry* best = nullptr;
     double best_mismatch = 0;
@@ -53,19 +79,9 @@ class DurationGuess {
       }
       if (best_mismatch < 1e-6) break;  // a whole number of periods back: its twin
     }
-    if (!best || !(best->duration > 0)) return std::nullopt;
-    return start + best->duration;
+    if (!best || !(best->duration > 0)) return nullptr;
+    return best;
   }
-
- private:
-  static constexpr std::size_t kDepth = 4;
-  struct Entry {
-    Work start = 0, duration = 0;
-  };
-  struct History {
-    std::array<Entry, kDepth> entries{};
-    std::size_t next = 0, size = 0;
-  };
 
   // How far a shift of the start by delta is from a whole number of periods
   // of every harmonic, in radians summed over them.

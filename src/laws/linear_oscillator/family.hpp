@@ -482,11 +482,20 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // of the stretch is that one resolution later. (With e0 = 0 the stretch
   // was one resolution long and v, far below its noise there, was taken for
   // a stop at once: a slip at a time, for ever, found by fuzzing.)
+  // The point there is moved from the start's by Taylor's theorem where it
+  // can be (LinearSlipLaw::moved: its bounds carry the start's derivatives'
+  // rounding over the resolution, as the closed form's own do there), and
+  // kept: it is the search's first point when the stretch is one resolution.
   Work blind = 0;
   if (start.v == 0) {
     const Work res = Traits::time_resolution(from);
     Jet<Work> noisy = at_from;
-    const Jet<Work> later = law.jet(bounded_point(from + res));
+    const Work next = from + res;
+    if (law.can_move(from, next)) {
+      const SlipPoint at_start = bounded.point();
+      bounded.at(next, [&law, &at_start](const Work& t) { return law.moved(at_start, t); });
+    }
+    const Jet<Work> later = law.jet(bounded_point(next));
     if (later.e0 > noisy.e0) noisy.e0 = later.e0;
     if (later.e1 > noisy.e1) noisy.e1 = later.e1;
     blind = within_noise(from, blind_after_rest(noisy, from, omega * start.x, res), noisy.e0, res);
@@ -496,6 +505,10 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
   // (first_zero.hpp): in a steady state its bracket then ends at the aim.
   const std::optional<Work> predicted = slip_guess_.after(start.sign, start.tau);
   const Work aim = aim_after(predicted);
+  // The twin's first proven step, tried first by the slip's first search;
+  // that search's own is remembered for the slips to come.
+  Work first_step = slip_guess_.first_step(start.sign, start.tau);
+  bool first_search = true;
   SlipEnd<Work> result;
   bool touched_against = false;  // the last touch had v resolvably against the slip
   // Touches that follow each other within 64 resolutions (no progress) are
@@ -516,8 +529,12 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
     // The search ends at the horizon or at the end of the law's segment.
     const Work to = law.segment_end() < tau_end_ ? law.segment_end() : tau_end_;
     ZeroBracket<Work> bracket;
-    if (from < to)
-      bracket = Search::run(search, from, at_from, to, blind, res, step_budget(from, to), aim);
+    if (from < to) {
+      bracket = Search::run(search, from, at_from, to, blind, res, step_budget(from, to), aim,
+                            first_search ? first_step : Work(0));
+      if (first_search) first_step = bracket.first_step;
+      first_search = false;
+    }
     if (!bracket.found && to < tau_end_) {
       const Jet<Work> at_to = law.jet(bounded_point(to));
       if (at_to.f > 0) {
@@ -610,7 +627,7 @@ SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real
       continue;
     }
     summary_->merged_sticks += decision.merged;
-    slip_guess_.remember(start.sign, start.tau, root);
+    slip_guess_.remember(start.sign, start.tau, root, first_step);
     last_stop_sign_ = start.sign;
     result.stops = true;
     result.tau = root;
