@@ -306,14 +306,23 @@ class FirstZeroSearch {
   // within twice its rounding error of zero counts as zero.
   static bool counts_as_zero(const Jet<Work>& j) { return !(j.f > 2 * j.e0); }
 
+  // The cubic lower bound of f(a + u) from the jet at a and m >= sup |f'''|:
+  // p(u) = c0 + c1 u + c2 u^2 / 2 - m u^3 / 6, each c_k the jet's value less
+  // its rounding bound. (stays_positive tests it; shortened finds its root.)
+  struct LowerCubic {
+    Work c0, c1, c2, m;
+    LowerCubic(const Jet<Work>& j, const Work& bound)
+        : c0(j.f - j.e0), c1(j.d1 - j.e1), c2(j.d2 - j.e2), m(bound) {}
+    Work operator()(const Work& u) const { return c0 + u * (c1 + u * (c2 / 2 - m * u / 6)); }
+    Work slope(const Work& u) const { return c1 + u * (c2 - m * u / 2); }
+  };
+
   // min over [u0, u1] of the cubic lower bound of f(a + u) is > 0.
   static bool stays_positive(const Jet<Work>& j, const Work& m, const Work& u0, const Work& u1) {
     using std::fabs;
     using std::sqrt;
-    const Work c0 = j.f - j.e0;
-    const Work c1 = j.d1 - j.e1;
-    const Work c2 = j.d2 - j.e2;
-    const auto p = [&](const Work& u) { return c0 + u * (c1 + u * (c2 / 2 - m * u / 6)); };
+    const LowerCubic p(j, m);
+    const Work &c0 = p.c0, &c1 = p.c1, &c2 = p.c2;
     // Rounding of p itself.
     const Work margin = 8 * std::numeric_limits<Work>::epsilon() *
                         (fabs(c0) + fabs(c1) * u1 + fabs(c2) * u1 * u1 / 2 + m * u1 * u1 * u1 / 6);
@@ -409,15 +418,14 @@ class FirstZeroSearch {
     const Work up = j.d1 - j.e1, down = j.d1 + j.e1;
     if (up > 0) consider(negative_up_to(-up, -(j.d2 - j.e2), m), slope_above_zero);
     if (down < 0) consider(negative_up_to(down, j.d2 + j.e2, m), slope_below_zero);
-    // p(u) = c0 + c1 u + c2 u^2 / 2 - m u^3 / 6 (stays_positive's), from u = h down.
-    const Work c0 = j.f - j.e0, c1 = j.d1 - j.e1, c2 = j.d2 - j.e2;
-    if (c0 > 0) {
+    // The exclusion's cubic, from u = h down.
+    const LowerCubic p(j, m);
+    if (p.c0 > 0) {
       Work u = h;
       for (int i = 0; i < 8; ++i) {
-        const Work p = c0 + u * (c1 + u * (c2 / 2 - m * u / 6));
-        const Work dp = c1 + u * (c2 - m * u / 2);
-        if (!(p < 0 && dp < 0)) break;  // past the fall (or at its root)
-        u -= p / dp;
+        const Work value = p(u), slope = p.slope(u);
+        if (!(value < 0 && slope < 0)) break;  // past the fall (or at its root)
+        u -= value / slope;
       }
       consider(u, [](const Jet<Work>& jet, const Work& bound, const Work& step) {
         return stays_positive(jet, bound, Work(0), step);
