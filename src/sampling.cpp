@@ -72,6 +72,10 @@ bool UniformSampler::advance_to(double t) {
 }
 
 bool UniformSampler::next(State& state) {
+  if (buffer_next_ < buffer_size_) {
+    state = buffer_[buffer_next_++];
+    return true;
+  }
   if (finished_ || !have_phase_) return false;
   // The next grid time below t_end (a grid time within 1e-9 dt of t_end is
   // dropped, so t_end is not preceded by a near-duplicate), else t_end.
@@ -87,12 +91,25 @@ bool UniformSampler::next(State& state) {
     return true;
   }
   if (!advance_to(t)) return finish();
-  state = (*law_)(t);
-  if (on_grid) {
-    ++index_;
-  } else {
+  if (!on_grid) {
+    state = (*law_)(t);
     finished_ = true;
+    return true;
   }
+  // This grid time and the next ones inside the same phase, evaluated
+  // together (four at a time on the seed's fast path); the rows that follow
+  // are served from the buffer.
+  const double limit = options_.last_grid_limit();
+  std::size_t count = 0;
+  for (double g = t; count < kBufferRows && g < limit && g < phase_.t_end;
+       g = grid_time(index_ + count))
+    buffer_times_[count++] = g;
+  if (count == 0) buffer_times_[count++] = t;  // t at the phase's own end
+  (*law_)(buffer_times_.data(), count, buffer_.data());
+  index_ += count;
+  buffer_next_ = 1;
+  buffer_size_ = count;
+  state = buffer_[0];
   return true;
 }
 

@@ -2,6 +2,8 @@
 // produced as a stream on top of the engine (memory flat for any horizon).
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -53,6 +55,11 @@ class UniformSampler {
   std::optional<PhaseEvaluator> law_;
   std::uint64_t index_ = 0;
   bool finished_ = false;
+  // Grid rows of the current phase evaluated together, served in order.
+  static constexpr std::size_t kBufferRows = 64;
+  std::array<double, kBufferRows> buffer_times_{};
+  std::array<State, kBufferRows> buffer_{};
+  std::size_t buffer_next_ = 0, buffer_size_ = 0;
 };
 
 // max(t, t0 + 4 time resolutions): a horizon the engine accepts however

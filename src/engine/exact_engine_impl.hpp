@@ -135,6 +135,12 @@ BasicState<Real> BasicPhaseEvaluator<Real>::operator()(const Real& t) const {
 }
 
 template <class Real>
+void BasicPhaseEvaluator<Real>::operator()(const Real* times, std::size_t count,
+                                           BasicState<Real>* states) const {
+  formula_->at_many(times, count, states);
+}
+
+template <class Real>
 BasicState<Real> evaluate(const BasicModel<Real>& model, const BasicPhase<Real>& phase,
                           const Real& t) {
   return detail::make_phase_formula(model, phase)->at(t);

@@ -2,6 +2,7 @@
 // BasicPhaseEvaluator holds one). Each family of phase laws implements it.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 
 #include "frictionref/model.hpp"
@@ -15,6 +16,10 @@ class PhaseFormula {
   virtual ~PhaseFormula() = default;
   // State at t in [t_begin, t_end] (the stored end state at t_end exactly).
   virtual BasicState<Real> at(const Real& t) const = 0;
+  // The same at each of n times (a family may evaluate them together).
+  virtual void at_many(const Real* t, std::size_t n, BasicState<Real>* out) const {
+    for (std::size_t i = 0; i < n; ++i) out[i] = at(t[i]);
+  }
 };
 
 // The rules every family's dense output shares. A stick holds its rest

@@ -1,9 +1,18 @@
 // Dense output of the seed's model: the state inside an emitted phase from
-// its law (one sin_cos per evaluation).
+// its law. For double, a slip is evaluated first on the fast path
+// (double_double_slip.hpp: four times at once in double-double, answers only
+// where they are provably the correctly rounded doubles), and in long double
+// (one sin_cos per evaluation) where that path cannot decide.
 #pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <optional>
+#include <type_traits>
 
 #include "engine/phase_formula.hpp"
 #include "engine/scalar_traits.hpp"
+#include "laws/harmonic_coulomb/double_double_slip.hpp"
 #include "laws/harmonic_coulomb/phase_law.hpp"
 
 namespace frictionref::detail {
@@ -17,9 +26,45 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
       : phase_(phase),
         omega_(model.omega),
         law_(model, phase.kind, omega_ * Work(phase.t_begin), Work(phase.x_begin),
-             Work(phase.v_begin)) {}
+             Work(phase.v_begin)) {
+    if constexpr (std::is_same_v<Real, double>) {
+      if (phase.kind != PhaseKind::stick && double_double_lanes_available()) {
+        fast_.emplace(SeedSlipStart{model.omega, model.amplitude, model.mass, model.friction,
+                                    slip_sign(phase.kind), phase.t_begin, phase.x_begin,
+                                    phase.v_begin});
+        if (!fast_->usable()) fast_.reset();
+      }
+    }
+  }
 
   BasicState<Real> at(const Real& t) const override {
+    BasicState<Real> state;
+    at_many(&t, 1, &state);
+    return state;
+  }
+
+  void at_many(const Real* t, std::size_t n, BasicState<Real>* out) const override {
+    if (!fast_) {
+      for (std::size_t i = 0; i < n; ++i) out[i] = long_double_at(t[i]);
+      return;
+    }
+    if constexpr (std::is_same_v<Real, double>) {
+      constexpr std::size_t kChunk = 64;
+      double x[kChunk], v[kChunk], a[kChunk];
+      unsigned char decided[kChunk];
+      for (std::size_t i = 0; i < n; i += kChunk) {
+        const std::size_t m = std::min(kChunk, n - i);
+        fast_->evaluate(t + i, m, x, v, a, decided);
+        for (std::size_t k = 0; k < m; ++k)
+          out[i + k] = decided[k] ? slip_state(phase_, t[i + k], x[k], v[k], a[k])
+                                  : long_double_at(t[i + k]);
+      }
+    }
+  }
+
+  // The state from the long double law alone (what the fast path must agree
+  // with; tests compare the two).
+  BasicState<Real> long_double_at(const Real& t) const {
     if (phase_.kind == PhaseKind::stick) return rest_state(phase_, t);
     const auto point = law_.point(omega_ * Work(t));
     // v = s (s v).
@@ -27,10 +72,27 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
                       Real(law_.acceleration_at(point.at)));
   }
 
+  // The fast path's answer alone, where it decides (tests).
+  bool fast_at(const Real& t, BasicState<Real>& state) const {
+    if constexpr (std::is_same_v<Real, double>) {
+      if (!fast_) return false;
+      double x, v, a;
+      unsigned char decided;
+      fast_->evaluate(&t, 1, &x, &v, &a, &decided);
+      if (decided) state = slip_state(phase_, t, x, v, a);
+      return decided;
+    } else {
+      (void)t;
+      (void)state;
+      return false;
+    }
+  }
+
  private:
   BasicPhase<Real> phase_;
   Work omega_;
   PhaseLaw<Work> law_;
+  std::optional<DoubleDoubleSlip> fast_;  // slips of double models, where the CPU allows
 };
 
 }  // namespace frictionref::detail

@@ -1,0 +1,227 @@
+// Compiled with -mavx2 -mfma -ffp-contract=off (src/CMakeLists.txt) and
+// entered only where double_double_lanes_available(). It includes nothing
+// that defines inline functions of the library or the standard library, so
+// no AVX2 copy of a shared inline function can be chosen by the linker for
+// the rest of the program.
+#include "laws/harmonic_coulomb/double_double_slip.hpp"
+
+#include "numeric/double_double_lanes.hpp"
+#include "numeric/double_double_table.hpp"
+
+namespace frictionref::detail {
+namespace {
+
+using lanes::Bounded;
+using lanes::exact;
+using lanes::Lanes;
+using lanes::magnitude;
+using lanes::Mask;
+using lanes::Pair;
+using lanes::splat;
+
+// The error of sin_cos beyond its argument's, for |d| <= 0.01228 (docs/theory.md
+// 11): cos d - 1 below its leading term, rounded in double, 5.3e-25; the
+// terms of the sum formulas rounded in double, 2.2e-25; the dropped products
+// S.lo (cos d - 1 + d^2/2) and C.lo (sin d - d.hi + d.hi^3/6), 5.4e-26; sin d
+// beyond d.hi - d.hi^3/6 (series and roundings), 3.8e-27; the table, 1.2e-32.
+// Together 8.1e-25 < 2^-80; the bound is 16 times that. The reduction adds
+// |j| 2^-94 (its sums of terms up to |j| 2^-44).
+constexpr double kTrigError = 0x1p-76;
+constexpr double kReductionErrorPerStep = 0x1p-94;
+
+struct Trig {
+  Bounded sin, cos;
+};
+
+// table[index] per lane (the masked form: the plain one reads an
+// uninitialized register in GCC 12's header).
+inline Lanes gather(const double* table, __m128i index) {
+  return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), table, index,
+                                  _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
+}
+
+// sin and cos of base pi/128 + y, for |y.hi| <= 2^9 and base in 0..255.
+Trig sin_cos(const Bounded& y, __m128i base, const DoubleDoubleTrigTable& t) {
+  const Lanes j = lanes::nearest_integer(y.value.hi * t.steps_per_radian);  // |j| < 2^15
+  // d = y - j pi/128: j reduce1 and its difference with y.hi are exact; the
+  // rest are terms below |j| 2^-44.
+  const Pair r = lanes::two_sum(y.value.hi, -j * t.reduce1);
+  const Pair jr2 = lanes::two_prod(j, splat(t.reduce2));
+  const Lanes low = ((r.lo + y.value.lo) - jr2.hi) - (jr2.lo + j * t.reduce3);
+  const Pair d = lanes::two_sum(r.hi, low);
+  // sin d = d.hi + c3 + sin_small with c3 = -d.hi^3 / 6 as a pair (exact
+  // products, 1/6 as a pair) and sin_small = d.lo, d.lo's first-order share
+  // and the terms from d^5 on (below 2.4e-12). cos d = 1 + q_hi + q_lo with
+  // q_hi = -d.hi^2 / 2 exactly. Series truncated below 3e-29.
+  const Pair square = lanes::two_prod(d.hi, d.hi);
+  const Lanes d2 = square.hi;
+  const Pair cube = lanes::two_prod(d.hi, square.hi);
+  const Lanes cube_lo = cube.lo + d.hi * square.lo;
+  const Pair c3_top = lanes::two_prod(cube.hi, splat(-t.sixth_hi));
+  const Lanes c3_hi = c3_top.hi;
+  const Lanes c3_lo = c3_top.lo - (cube.hi * t.sixth_lo + cube_lo * t.sixth_hi);
+  const Lanes sin_small =
+      ((c3_lo - d.lo * d2 * 0.5) +
+       d.hi * (d2 * d2) * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880)))) +
+      d.lo;
+  const Lanes q_hi = -0.5 * square.hi;
+  const Lanes q_lo =
+      (-0.5 * square.lo - d.hi * d.lo) +
+      d2 * d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 + d2 * (-1.0 / 3628800))));
+  const __m128i index = _mm_and_si128(_mm_add_epi32(_mm256_cvtpd_epi32(j), base),
+                                      _mm_set1_epi32(DoubleDoubleTrigTable::kSize - 1));
+  const Lanes s_hi = gather(t.sin_hi, index);
+  const Lanes s_lo = gather(t.sin_lo, index);
+  const Lanes c_hi = gather(t.cos_hi, index);
+  const Lanes c_lo = gather(t.cos_lo, index);
+  // sin = S + S q + C sin d and cos = C + C q - S sin d. The products of the
+  // leading parts are exact and so is their sum with S or C; every other
+  // term is below 1e-9 (rounded in double), the smallest added first.
+  const Pair p1 = lanes::two_prod(s_hi, q_hi);
+  const Pair p2 = lanes::two_prod(c_hi, d.hi);
+  const Pair p5 = lanes::two_prod(c_hi, c3_hi);
+  const Pair a1 = lanes::two_sum(p1.hi, p5.hi);
+  const Pair a2 = lanes::two_sum(p2.hi, a1.hi);
+  const Pair a3 = lanes::two_sum(s_hi, a2.hi);
+  const Lanes sin_rest = ((((s_lo + p1.lo + p2.lo + p5.lo) + (a1.lo + a2.lo + a3.lo)) +
+                           (s_lo * q_hi + c_lo * d.hi + c_lo * c3_hi)) +
+                          c_hi * sin_small) +
+                         s_hi * q_lo;
+  const Pair p3 = lanes::two_prod(c_hi, q_hi);
+  const Pair p4 = lanes::two_prod(-s_hi, d.hi);
+  const Pair p6 = lanes::two_prod(-s_hi, c3_hi);
+  const Pair b1 = lanes::two_sum(p3.hi, p6.hi);
+  const Pair b2 = lanes::two_sum(p4.hi, b1.hi);
+  const Pair b3 = lanes::two_sum(c_hi, b2.hi);
+  const Lanes cos_rest = ((((c_lo + p3.lo + p4.lo + p6.lo) + (b1.lo + b2.lo + b3.lo)) +
+                           (c_lo * q_hi - s_lo * d.hi - s_lo * c3_hi)) -
+                          s_hi * sin_small) +
+                         c_hi * q_lo;
+  const Lanes error = y.error + (kTrigError + magnitude(j) * kReductionErrorPerStep);
+  return {{lanes::two_sum(a3.hi, sin_rest), error}, {lanes::two_sum(b3.hi, cos_rest), error}};
+}
+
+// n / d with |error| <= 2^-100 |n / d| (9 u^2 by the residual's analysis:
+// n - q0 d.hi is exact by Sterbenz's lemma).
+Bounded quotient(double n, const Pair& d) {
+  const Lanes q0 = splat(n) / d.hi;
+  const Pair p = lanes::two_prod(q0, d.hi);
+  const Lanes residual = ((splat(n) - p.hi) - p.lo) - q0 * d.lo;
+  const Pair q = lanes::fast_two_sum(q0, residual / d.hi);
+  return {q, magnitude(q0) * 0x1p-100 + lanes::kUnderflowSlack};
+}
+
+double first(Lanes x) { return x[0]; }
+bool finite(double x) { return x - x == 0; }
+
+}  // namespace
+
+void double_double_sin_cos(double hi, double lo, double out[5]) {
+  const Trig trig =
+      sin_cos(exact(Pair{splat(hi), splat(lo)}), _mm_set1_epi32(0), double_double_trig_table());
+  out[0] = first(trig.sin.value.hi);
+  out[1] = first(trig.sin.value.lo);
+  out[2] = first(trig.cos.value.hi);
+  out[3] = first(trig.cos.value.lo);
+  out[4] = first(trig.sin.error);
+}
+
+DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
+  if (!(finite(s.omega) && finite(s.amplitude) && finite(s.mass) && finite(s.friction) &&
+        finite(s.t_begin) && finite(s.x_begin) && finite(s.v_begin)))
+    return;
+  if (!(s.omega > 0 && s.mass > 0 && (s.sign == 1 || s.sign == -1))) return;
+  // Magnitudes far from under- and overflow, so that the quotients' residuals
+  // are exact (the engine's models are far inside).
+  const auto moderate = [](double z) {
+    return z == 0 || (__builtin_fabs(z) >= 0x1p-500 && __builtin_fabs(z) <= 0x1p500);
+  };
+  if (!(moderate(s.omega) && moderate(s.mass) && moderate(s.amplitude) && moderate(s.friction) &&
+        moderate(s.omega * s.mass)))
+    return;
+  const DoubleDoubleTrigTable& table = double_double_trig_table();
+  const Lanes omega = splat(s.omega);
+  const Pair a = lanes::two_prod(omega, splat(s.t_begin));  // w t_a exactly
+  if (!(__builtin_fabs(first(a.hi)) <= 0x1p24)) return;
+  // j_a pi/128 nearest w t_a (|j_a| < 2^30), to 2^-79 for |w t_a| <= 2^24.
+  const Lanes j = lanes::nearest_integer(a.hi * table.steps_per_radian);
+  const Lanes j3 = j * table.base3;
+  const Bounded base_angle =
+      exact(j * table.base1) + exact(lanes::two_prod(j, splat(table.base2))) +
+      Bounded{{j3, splat(0)}, magnitude(j3) * 0x1p-52 + magnitude(j) * 0x1p-130};
+  const long long j_a = static_cast<long long>(first(j));
+  base_index_ = static_cast<int>(j_a & (DoubleDoubleTrigTable::kSize - 1));
+
+  const Pair mass_omega = lanes::two_prod(splat(s.mass), omega);
+  const Bounded b = quotient(s.amplitude, mass_omega);
+  const Bounded r = quotient(s.friction, mass_omega);
+  const Bounded inverse_omega = quotient(1.0, Pair{omega, splat(0)});
+  const Bounded angle = exact(a);
+  const Trig start = sin_cos(angle - base_angle, _mm_set1_epi32(base_index_), table);
+  const Bounded sr = s.sign > 0 ? r : -r;
+  const Bounded moving = exact(splat(s.v_begin)) + b * start.cos;  // v_a + b cos a
+  const Bounded b_over_omega = b * inverse_omega;
+
+  const auto keep = [](const Bounded& c) {
+    return Constant{first(c.value.hi), first(c.value.lo), first(c.error)};
+  };
+  base_angle_ = keep(base_angle);
+  v0_ = keep(moving + sr * angle);
+  b_ = keep(b);
+  sr_ = keep(sr);
+  wb_ = keep(exact(omega) * b);
+  wsr_ = keep(exact(omega) * sr);
+  x0_ = keep(exact(splat(s.x_begin)) + b_over_omega * start.sin);
+  w_over_omega_ = keep(moving * inverse_omega);
+  b_over_omega_ = keep(b_over_omega);
+  half_sr_over_omega_ = keep(lanes::scaled(sr * inverse_omega, 0.5));
+  omega_ = s.omega;
+  a_hi_ = first(a.hi);
+  a_lo_ = first(a.lo);
+  const Constant* const all[] = {
+      &base_angle_,        &v0_, &b_, &sr_, &wb_, &wsr_, &x0_, &w_over_omega_, &b_over_omega_,
+      &half_sr_over_omega_};
+  for (const Constant* c : all)
+    if (!(finite(c->hi) && finite(c->lo) && finite(c->error))) return;
+  usable_ = true;
+}
+
+void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
+                                unsigned char* decided) const {
+  const DoubleDoubleTrigTable& table = double_double_trig_table();
+  const auto lanes_of = [](const Constant& c) {
+    return Bounded{{splat(c.hi), splat(c.lo)}, splat(c.error)};
+  };
+  const Lanes omega = splat(omega_);
+  const Bounded angle = exact(Pair{splat(a_hi_), splat(a_lo_)});
+  const Bounded base_angle = lanes_of(base_angle_), v0 = lanes_of(v0_), b = lanes_of(b_),
+                sr = lanes_of(sr_), wb = lanes_of(wb_), wsr = lanes_of(wsr_), x0 = lanes_of(x0_),
+                w_over_omega = lanes_of(w_over_omega_), b_over_omega = lanes_of(b_over_omega_),
+                half_sr_over_omega = lanes_of(half_sr_over_omega_);
+  const __m128i base = _mm_set1_epi32(base_index_);
+  for (std::size_t i = 0; i < n; i += 4) {
+    // A short last group repeats its last time in the unused lanes.
+    const std::size_t used = n - i < 4 ? n - i : 4;
+    const Lanes time{t[i], t[i + (used > 1 ? 1 : 0)], t[i + (used > 2 ? 2 : used - 1)],
+                     t[i + used - 1]};
+    const Bounded tau = exact(lanes::two_prod(omega, time));  // w t exactly
+    const Bounded h = tau - angle;
+    const Bounded y = tau - base_angle;
+    const Mask in_range = magnitude(y.value.hi) <= splat(512.0);
+    const Trig trig = sin_cos(y, base, table);
+    const Bounded velocity = v0 - b * trig.cos - sr * tau;
+    const Bounded acceleration = wb * trig.sin - wsr;
+    const Bounded position =
+        x0 + w_over_omega * h - b_over_omega * trig.sin - half_sr_over_omega * (h * h);
+    const Mask ok = in_range & lanes::decided(velocity) & lanes::decided(acceleration) &
+                    lanes::decided(position);
+    for (std::size_t k = 0; k < used; ++k) {
+      x[i + k] = position.value.hi[k];
+      v[i + k] = velocity.value.hi[k];
+      a[i + k] = acceleration.value.hi[k];
+      decided[i + k] = ok[k] != 0;
+    }
+  }
+}
+
+}  // namespace frictionref::detail

@@ -1,0 +1,63 @@
+// The fast path of the seed's dense output (docs/theory.md 11): a slip's x, v
+// and a at many times, four at once, in double-double arithmetic with a
+// rigorous error bound. Where the bound shows which double the exact closed
+// form rounds to, that double is the answer (it is the correctly rounded
+// value, so it equals the long double path's answer wherever that one is
+// correctly rounded); elsewhere the lane is left undecided and the caller
+// evaluates it in long double (Ziv's strategy).
+//
+// The exact closed form is that of phase_law.hpp at exact arguments:
+// tau = w t and a = w t_a exactly, b = B / (m w), r = R / (m w):
+//   v = (v_a + b cos a + s r a) - b cos tau - s r tau
+//   a = w b sin tau - w s r
+//   x = (x_a + b sin a / w) + (v_a + b cos a) / w h - b / w sin tau - s r / (2 w) h^2,
+// h = tau - a.
+#pragma once
+
+#include <cstddef>
+
+#include "numeric/double_double_table.hpp"
+
+namespace frictionref::detail {
+
+struct SeedSlipStart {
+  double omega, amplitude, mass, friction;
+  int sign;  // +1 forward, -1 backward
+  double t_begin, x_begin, v_begin;
+};
+
+// The fast path's sin and cos of y = hi + lo (|hi| <= 512), each as a
+// double-double pair with its error bound: out = {sin hi, sin lo, cos hi,
+// cos lo, bound}. For tests of the bound; only where
+// double_double_lanes_available().
+void double_double_sin_cos(double hi, double lo, double out[5]);
+
+class DoubleDoubleSlip {
+ public:
+  // Only where double_double_lanes_available(). Not usable() for starts
+  // outside its ranges (|w t_a| > 2^24, non-finite constants).
+  explicit DoubleDoubleSlip(const SeedSlipStart& start);
+
+  bool usable() const { return usable_; }
+
+  // For i < n: decided[i] = 1 and x[i], v[i], a[i] the correctly rounded
+  // doubles of the closed form at t[i], or decided[i] = 0 (then x, v, a are
+  // unspecified). Lanes with |w t - w t_a| beyond about 500 are undecided.
+  void evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
+                unsigned char* decided) const;
+
+ private:
+  // A double-double constant and its error bound.
+  struct Constant {
+    double hi = 0, lo = 0, error = 0;
+  };
+
+  bool usable_ = false;
+  double omega_ = 0;
+  double a_hi_ = 0, a_lo_ = 0;  // w t_a exactly
+  int base_index_ = 0;          // j_a mod 256: w t_a = j_a pi/128 + small
+  Constant base_angle_;         // j_a pi/128
+  Constant v0_, b_, sr_, wb_, wsr_, x0_, w_over_omega_, b_over_omega_, half_sr_over_omega_;
+};
+
+}  // namespace frictionref::detail

@@ -1,0 +1,124 @@
+// Double-double arithmetic on four lanes at once, with a running error bound
+// per value: the arithmetic of the fast paths (docs/theory.md 11).
+//
+// A value is hi + lo (|lo| <= ulp(hi) / 2) in each lane of an AVX2 register,
+// and a Bounded value also carries e >= |hi + lo - exact|. The algorithms and
+// their relative error bounds (u = 2^-53) are those proved by Joldes, Muller
+// and Popescu, "Tight and rigorous error bounds for basic building blocks of
+// double-word arithmetic", ACM TOMS 44(2), 2017: AccurateDWPlusDW (3u^2),
+// DWTimesDW3 (5u^2 in the paper's statement, 4u^2 with its later proof),
+// 2Sum, Fast2Sum and 2Prod (exact). The bounds used here are twice those, and
+// every error term is taken from |hi| (|hi + lo| <= |hi| (1 + u)); a final
+// factor 1 + 2^-40 in `decided` covers that and the rounding of the error
+// arithmetic itself (fewer than 2^10 operations per value). An absolute
+// 2^-1000 per operation covers any loss to underflow.
+//
+// Only for translation units compiled with -mavx2 -mfma -ffp-contract=off
+// (src/CMakeLists.txt), which run only on a CPU that has both (the callers
+// check `double_double_lanes_available()` first).
+#pragma once
+
+#include <immintrin.h>
+
+namespace frictionref::detail::lanes {
+
+using Lanes = double __attribute__((vector_size(32)));    // four doubles
+using Mask = long long __attribute__((vector_size(32)));  // -1 where true, 0 where false
+
+inline Lanes splat(double x) { return Lanes{x, x, x, x}; }
+inline Lanes magnitude(Lanes a) { return _mm256_andnot_pd(splat(-0.0), a); }
+inline Lanes fused(Lanes a, Lanes b, Lanes c) { return _mm256_fmadd_pd(a, b, c); }  // a b + c
+inline Lanes nearest_integer(Lanes a) {
+  return _mm256_round_pd(a, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+}
+
+struct Pair {
+  Lanes hi, lo;
+};
+
+// a + b exactly (Knuth's 2Sum).
+inline Pair two_sum(Lanes a, Lanes b) {
+  const Lanes s = a + b;
+  const Lanes bb = s - a;
+  return {s, (a - (s - bb)) + (b - bb)};
+}
+
+// a + b exactly where |a| >= |b| or a = 0 (Dekker's Fast2Sum).
+inline Pair fast_two_sum(Lanes a, Lanes b) {
+  const Lanes s = a + b;
+  return {s, b - (s - a)};
+}
+
+// a b exactly (2Prod with a fused multiply-add).
+inline Pair two_prod(Lanes a, Lanes b) {
+  const Lanes p = a * b;
+  return {p, fused(a, b, -p)};
+}
+
+// AccurateDWPlusDW: relative error <= 3u^2 / (1 - 4u).
+inline Pair add(Pair x, Pair y) {
+  const Pair s = two_sum(x.hi, y.hi);
+  const Pair t = two_sum(x.lo, y.lo);
+  const Pair v = fast_two_sum(s.hi, s.lo + t.hi);
+  return fast_two_sum(v.hi, t.lo + v.lo);
+}
+
+// DWTimesDW3: relative error <= 5u^2.
+inline Pair multiply(Pair x, Pair y) {
+  const Pair c = two_prod(x.hi, y.hi);
+  const Lanes low = fused(x.lo, y.hi, fused(x.hi, y.lo, x.lo * y.lo));
+  return fast_two_sum(c.hi, c.lo + low);
+}
+
+inline constexpr double kAddError = 0x1p-104;       // >= 3u^2 (1 + u) / (1 - 4u)
+inline constexpr double kMultiplyError = 0x1p-103;  // >= 5u^2 (1 + u)
+inline constexpr double kUnderflowSlack = 0x1p-1000;
+
+// A double-double value with |hi + lo - exact| <= error in each lane.
+struct Bounded {
+  Pair value;
+  Lanes error;
+};
+
+inline Bounded exact(Lanes x) { return {{x, splat(0)}, splat(0)}; }
+inline Bounded exact(Pair x) { return {x, splat(0)}; }
+
+inline Bounded operator+(const Bounded& x, const Bounded& y) {
+  const Pair z = add(x.value, y.value);
+  return {z, (x.error + y.error) + (kAddError * magnitude(z.hi) + kUnderflowSlack)};
+}
+
+inline Bounded operator-(const Bounded& x) { return {{-x.value.hi, -x.value.lo}, x.error}; }
+inline Bounded operator-(const Bounded& x, const Bounded& y) { return x + (-y); }
+
+inline Bounded operator*(const Bounded& x, const Bounded& y) {
+  const Pair z = multiply(x.value, y.value);
+  const Lanes propagated =
+      magnitude(x.value.hi) * y.error + magnitude(y.value.hi) * x.error + x.error * y.error;
+  return {z, propagated + (kMultiplyError * magnitude(z.hi) + kUnderflowSlack)};
+}
+
+// Exact scaling by a power of two (no underflow in the engine's ranges: the
+// slack covers it anyway).
+inline Bounded scaled(const Bounded& x, double power_of_two) {
+  return {{x.value.hi * power_of_two, x.value.lo * power_of_two},
+          x.error * __builtin_fabs(power_of_two) + kUnderflowSlack};
+}
+
+// Lanes where the exact value (within `error` of hi + lo, hi + lo normalized)
+// rounds to hi in round-to-nearest: then hi is the correctly rounded double.
+// fl(hi + w) == hi for w above lo + error and for w below lo - error brackets
+// the exact value between two numbers that both round to hi (rounding is
+// monotone); w is taken wide enough that its own rounding cannot bring it
+// inside. Non-finite lanes and tiny magnitudes (< 2^-900) are never decided.
+inline Mask decided(const Bounded& y) {
+  const Lanes hi = y.value.hi;
+  const Lanes lo = y.value.lo;
+  const Lanes margin = y.error * (1 + 0x1p-40) + magnitude(hi) * 0x1p-104;
+  const Lanes up = hi + (lo + margin);
+  const Lanes down = hi + (lo - margin);
+  return (up == hi) & (down == hi) & (magnitude(hi) > splat(0x1p-900)) &
+         (magnitude(hi) < splat(0x1p1000));
+}
+
+}  // namespace frictionref::detail::lanes

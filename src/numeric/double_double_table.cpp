@@ -1,0 +1,95 @@
+#include "numeric/double_double_table.hpp"
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <cmath>
+
+namespace frictionref::detail {
+namespace {
+
+using Fifty = boost::multiprecision::cpp_bin_float_50;
+
+// x rounded to `bits` significant bits below 2^top (x in [2^(top-1), 2^top)).
+Fifty rounded_to_bits(const Fifty& x, int top, int bits) {
+  const Fifty scale = ldexp(Fifty(1), bits - top);
+  return round(x * scale) / scale;
+}
+
+// hi + lo = value to 2^-106 relative.
+void split(const Fifty& value, double& hi, double& lo) {
+  hi = static_cast<double>(value);
+  lo = static_cast<double>(value - hi);
+}
+
+DoubleDoubleTrigTable make_table() {
+  DoubleDoubleTrigTable t{};
+  const Fifty step = boost::math::constants::pi<Fifty>() / 128;
+  // The first quadrant from 50 digits; the others by exact symmetry, as in
+  // sin_cos.cpp.
+  constexpr int kQuadrant = DoubleDoubleTrigTable::kSize / 4;
+  double s_hi[kQuadrant], s_lo[kQuadrant], c_hi[kQuadrant], c_lo[kQuadrant];
+  for (int j = 0; j < kQuadrant; ++j) {
+    split(sin(step * j), s_hi[j], s_lo[j]);
+    split(cos(step * j), c_hi[j], c_lo[j]);
+  }
+  for (int j = 0; j < DoubleDoubleTrigTable::kSize; ++j) {
+    const int r = j % kQuadrant;
+    double sh = 0, sl = 0, ch = 0, cl = 0;
+    switch (j / kQuadrant) {
+      case 0:
+        sh = s_hi[r];
+        sl = s_lo[r];
+        ch = c_hi[r];
+        cl = c_lo[r];
+        break;
+      case 1:
+        sh = c_hi[r];
+        sl = c_lo[r];
+        ch = -s_hi[r];
+        cl = -s_lo[r];
+        break;
+      case 2:
+        sh = -s_hi[r];
+        sl = -s_lo[r];
+        ch = -c_hi[r];
+        cl = -c_lo[r];
+        break;
+      default:
+        sh = -c_hi[r];
+        sl = -c_lo[r];
+        ch = s_hi[r];
+        cl = s_lo[r];
+        break;
+    }
+    t.sin_hi[j] = sh;
+    t.sin_lo[j] = sl;
+    t.cos_hi[j] = ch;
+    t.cos_lo[j] = cl;
+  }
+  // pi/128 is in [2^-6, 2^-5).
+  const Fifty r1 = rounded_to_bits(step, -5, 38);
+  t.reduce1 = static_cast<double>(r1);
+  t.reduce2 = static_cast<double>(step - r1);
+  t.reduce3 = static_cast<double>(step - r1 - Fifty(t.reduce2));
+  const Fifty b1 = rounded_to_bits(step, -5, 23);
+  t.base1 = static_cast<double>(b1);
+  t.base2 = static_cast<double>(step - b1);
+  t.base3 = static_cast<double>(step - b1 - Fifty(t.base2));
+  t.steps_per_radian = static_cast<double>(1 / step);
+  split(Fifty(1) / 6, t.sixth_hi, t.sixth_lo);
+  return t;
+}
+
+}  // namespace
+
+bool double_double_lanes_available() {
+  static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return available;
+}
+
+const DoubleDoubleTrigTable& double_double_trig_table() {
+  static const DoubleDoubleTrigTable table = make_table();
+  return table;
+}
+
+}  // namespace frictionref::detail

@@ -1,0 +1,32 @@
+// The constants of the double-double sin and cos (numeric/double_double_lanes
+// users): sin and cos of j pi/128 as double-double pairs, and pi/128 split
+// into parts whose products with small integers are exact. All rounded once
+// from 50-digit values (double_double_table.cpp), as sin_cos.cpp's table.
+#pragma once
+
+namespace frictionref::detail {
+
+struct DoubleDoubleTrigTable {
+  static constexpr int kSize = 256;  // table step pi/128
+  alignas(32) double sin_hi[kSize];
+  alignas(32) double sin_lo[kSize];
+  alignas(32) double cos_hi[kSize];
+  alignas(32) double cos_lo[kSize];
+  // pi/128 = reduce1 + reduce2 + reduce3 + (< 2^-150): reduce1 has 38
+  // significant bits, so j * reduce1 is exact for |j| < 2^15.
+  double reduce1, reduce2, reduce3;
+  // pi/128 = base1 + base2 + base3 + (< 2^-135): base1 has 23 significant
+  // bits, so j * base1 is exact for |j| < 2^30.
+  double base1, base2, base3;
+  double steps_per_radian;    // 128 / pi, rounded
+  double sixth_hi, sixth_lo;  // 1/6 as a pair
+};
+
+// Built once (thread-safe), about 2 ms.
+const DoubleDoubleTrigTable& double_double_trig_table();
+
+// True where this CPU has AVX2 and FMA, the instructions of
+// numeric/double_double_lanes.hpp (its users run only then).
+bool double_double_lanes_available();
+
+}  // namespace frictionref::detail

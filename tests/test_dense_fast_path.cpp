@@ -1,0 +1,217 @@
+// The seed's dense fast path (double_double_slip.hpp, docs/theory.md 11)
+// against an independent 50-digit evaluation of the closed form (Boost's own
+// sin and cos on exact arguments), and against the long double path it
+// short-cuts: the same rows, except where the long double path is not the
+// correctly rounded one and the fast path is.
+#include <gtest/gtest.h>
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <iostream>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "frictionref/exact_engine.hpp"
+#include "frictionref/sampling.hpp"
+#include "laws/harmonic_coulomb/double_double_slip.hpp"
+#include "laws/harmonic_coulomb/phase_formula.hpp"
+#include "random_models.hpp"
+
+namespace frictionref {
+namespace {
+
+using Fifty = boost::multiprecision::cpp_bin_float_50;
+
+// The double nearest x (ties cannot occur at 50 digits for these values).
+double nearest(const Fifty& x) {
+  const double d = static_cast<double>(x);
+  double best = d;
+  for (double n : {std::nextafter(d, -HUGE_VAL), std::nextafter(d, HUGE_VAL)})
+    if (abs(Fifty(n) - x) < abs(Fifty(best) - x)) best = n;
+  return best;
+}
+
+// The closed form of phase_law.hpp in 50 digits at exact w t and w t_a.
+struct Exact {
+  double x, v, a;
+};
+class ExactSlip {
+ public:
+  ExactSlip(const Model& m, const Phase& p)
+      : w_(m.omega),
+        start_(w_ * Fifty(p.t_begin)),
+        cos_start_(cos(start_)),
+        sin_start_(sin(start_)),
+        b_(Fifty(m.amplitude) / (Fifty(m.mass) * w_)),
+        sr_(slip_sign(p.kind) * Fifty(m.friction) / (Fifty(m.mass) * w_)),
+        x_a_(p.x_begin),
+        v_a_(p.v_begin) {}
+
+  Exact at(double t) const {
+    const Fifty tau = w_ * Fifty(t);
+    const Fifty h = tau - start_;
+    const Fifty sin_tau = sin(tau);
+    const Fifty v = v_a_ + b_ * (cos_start_ - cos(tau)) - sr_ * h;
+    const Fifty x =
+        x_a_ + ((v_a_ + b_ * cos_start_) * h - b_ * (sin_tau - sin_start_) - sr_ * h * h / 2) / w_;
+    const Fifty a = w_ * (b_ * sin_tau - sr_);
+    return {nearest(x), nearest(v), nearest(a)};
+  }
+
+ private:
+  Fifty w_, start_, cos_start_, sin_start_, b_, sr_, x_a_, v_a_;
+};
+
+bool same(const State& s, const State& r) {
+  // Bitwise, so that -0 and +0 or NaNs would count as different.
+  return std::memcmp(&s.x, &r.x, sizeof(double)) == 0 &&
+         std::memcmp(&s.v, &r.v, sizeof(double)) == 0 &&
+         std::memcmp(&s.a, &r.a, sizeof(double)) == 0 && s.t == r.t && s.phase == r.phase;
+}
+
+bool available() { return detail::double_double_lanes_available(); }
+
+TEST(DoubleDoubleSinCos, WithinItsBoundOfFiftyDigits) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  std::mt19937_64 random(20261127);
+  const Fifty pi = boost::math::constants::pi<Fifty>();
+  Fifty worst = 0;
+  double bound = 0;
+  for (int i = 0; i < 60000; ++i) {
+    // Half of them next to the table's points j pi/256 (the longest reduced
+    // arguments), the others anywhere within +-512.
+    const double u = std::ldexp(static_cast<double>(random() >> 11), -53);
+    const double hi =
+        i % 2 ? (u - 0.5) * 1024
+              : static_cast<double>(pi / 256 * Fifty(static_cast<int>(u * 131072) - 65536)) *
+                    (1 + (u - 0.5) * 1e-12);
+    const double lo = hi * std::ldexp(u - 0.5, -53);
+    double out[5];
+    detail::double_double_sin_cos(hi, lo, out);
+    const Fifty y = Fifty(hi) + Fifty(lo);
+    worst = std::max(worst, abs(Fifty(out[0]) + Fifty(out[1]) - sin(y)));
+    worst = std::max(worst, abs(Fifty(out[2]) + Fifty(out[3]) - cos(y)));
+    bound = std::max(bound, out[4]);
+  }
+  // 2^-76 plus 2^-94 per table step of the reduction (at most 2^15).
+  EXPECT_GE(bound, std::ldexp(1.0, -76));
+  EXPECT_LE(bound, std::ldexp(1.0, -76) + std::ldexp(1.0, -79));
+  // The analysis gives 8.1e-25 for the reduced argument plus 2^-94 per step.
+  EXPECT_LT(worst, Fifty(8.1e-25) + Fifty(std::ldexp(1.0, -79))) << static_cast<double>(worst);
+  std::cout << "largest error of sin, cos: " << static_cast<double>(worst) << " (bound " << bound
+            << ")\n";
+}
+
+// Random slips of random models: every answer the fast path gives is the
+// correctly rounded value. Times are spread over the slip, and crowd towards
+// its end (where v -> 0 and the bound is tested hardest: the terms cancel).
+TEST(DoubleDoubleSlip, DecidedValuesAreCorrectlyRounded) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  testing::ModelStream stream(11);
+  std::mt19937_64 random(7);
+  const auto unit = [&] { return std::ldexp(static_cast<double>(random() >> 11), -53); };
+  std::uint64_t tried = 0, decided = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const testing::RandomModel r = stream.next();
+    ExactEngine engine(r.model, r.t_end);
+    Phase phase;
+    for (int k = 0; k < 6 && engine.next(phase); ++k) {
+      if (phase.kind == PhaseKind::stick) continue;
+      const detail::HarmonicCoulombFormula<double> formula(r.model, phase);
+      for (int j = 0; j < 8; ++j) {
+        const double fraction = j < 4 ? unit() : 1 - std::pow(10.0, -12 * unit());
+        const double t = phase.t_begin + fraction * phase.duration();
+        if (!(t > phase.t_begin && t < phase.t_end)) continue;
+        ++tried;
+        State fast;
+        if (!formula.fast_at(t, fast)) continue;
+        ++decided;
+        const Exact e = ExactSlip(r.model, phase).at(t);
+        ASSERT_EQ(fast.x, e.x) << testing::describe(r) << " t=" << t;
+        ASSERT_EQ(fast.v, e.v) << testing::describe(r) << " t=" << t;
+        ASSERT_EQ(fast.a, e.a) << testing::describe(r) << " t=" << t;
+      }
+    }
+  }
+  std::cout << decided << " of " << tried << " states decided by the fast path\n";
+  EXPECT_GT(tried, 10000u);
+  EXPECT_GT(decided, tried / 2);
+}
+
+// 10^5 random models, every slip sampled: the fast path with its fallback
+// gives the long double path's rows, except where the long double row is not
+// the correctly rounded one; there the fast row must be (50 digits).
+TEST(DenseFastPath, SameRowsAsTheLongDoublePathOnRandomModels) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  testing::ModelStream stream(2026);
+  std::uint64_t rows = 0, differing = 0, fast_closer = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const testing::RandomModel r = stream.next();
+    ExactEngine engine(r.model, r.t_end);
+    Phase phase;
+    for (int k = 0; k < 6 && engine.next(phase); ++k) {
+      if (phase.kind == PhaseKind::stick) continue;
+      const detail::HarmonicCoulombFormula<double> formula(r.model, phase);
+      constexpr int kTimes = 3;
+      double times[kTimes];
+      for (int j = 0; j < kTimes; ++j)
+        times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
+      State fast[kTimes];
+      formula.at_many(times, kTimes, fast);
+      std::optional<ExactSlip> exact;
+      for (int j = 0; j < kTimes; ++j) {
+        ++rows;
+        const State slow = formula.long_double_at(times[j]);
+        if (same(fast[j], slow)) continue;
+        ++differing;
+        if (!exact) exact.emplace(r.model, phase);
+        const Exact e = exact->at(times[j]);
+        const bool fast_rounded = fast[j].x == e.x && fast[j].v == e.v && fast[j].a == e.a;
+        ASSERT_TRUE(fast_rounded) << testing::describe(r) << " t=" << times[j];
+        ++fast_closer;
+      }
+    }
+  }
+  std::cout << rows << " rows; " << differing
+            << " differ from the long double path, and in all of them the fast row is the "
+               "correctly rounded one ("
+            << fast_closer << ")\n";
+  EXPECT_GT(rows, 300000u);
+  RecordProperty("rows", std::to_string(rows));
+  RecordProperty("differing_fast_correctly_rounded", std::to_string(fast_closer));
+}
+
+// The sampler's batches give the rows of one evaluation per time.
+TEST(DenseFastPath, SamplerRowsAreThoseOfSingleEvaluations) {
+  testing::ModelStream stream(5);
+  for (int i = 0; i < 300; ++i) {
+    const testing::RandomModel r = stream.next();
+    GridOptions grid;
+    grid.t_end = r.t_end;
+    grid.dt = (r.t_end - r.model.t0) / 333;
+    grid.include_events = i % 2 == 0;
+    if (!(r.model.t0 + grid.dt > r.model.t0)) continue;
+    UniformSampler sampler(r.model, grid);
+    ExactEngine engine(r.model, grid.t_end);
+    Phase phase;
+    ASSERT_TRUE(engine.next(phase));
+    State row;
+    std::uint64_t count = 0;
+    while (sampler.next(row)) {
+      ++count;
+      // The sampler's rule: a time at a boundary belongs to the next phase.
+      while (row.t >= phase.t_end && phase.t_end < grid.t_end && engine.next(phase)) {
+      }
+      const State single = evaluate(r.model, phase, row.t);
+      ASSERT_TRUE(same(row, single)) << testing::describe(r) << " row " << count;
+    }
+    EXPECT_GE(count, 333u);
+  }
+}
+
+}  // namespace
+}  // namespace frictionref
