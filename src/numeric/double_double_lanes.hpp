@@ -5,10 +5,14 @@
 // and a Bounded value also carries e >= |hi + lo - exact|. The algorithms and
 // their relative error bounds (u = 2^-53) are those proved by Joldes, Muller
 // and Popescu, "Tight and rigorous error bounds for basic building blocks of
-// double-word arithmetic", ACM TOMS 44(2), 2017: AccurateDWPlusDW (3u^2),
-// DWTimesDW3 (5u^2 in the paper's statement, 4u^2 with its later proof),
-// 2Sum, Fast2Sum and 2Prod (exact). The bounds used here are twice those, and
-// every error term is taken from |hi| (|hi + lo| <= |hi| (1 + u)); a final
+// double-word arithmetic", ACM TOMS 44(2), 2017: DWTimesDW3 (5u^2 in the
+// paper's statement, 4u^2 with its later proof), 2Sum, Fast2Sum and 2Prod
+// (exact). The sum is their SloppyDWPlusDW ending in 2Sum instead of
+// Fast2Sum: its two roundings, of x.lo + y.lo and of s.lo + that, are below
+// u^2 (|x.hi| + |y.hi|) and 2u^2 (1 + 2u) (|x.hi| + |y.hi|), an absolute bound
+// that holds through cancellation (its relative error does not, so the bound
+// is taken from the operands). The bounds used here exceed those, and every
+// error term is taken from |hi| (|hi + lo| <= |hi| (1 + u)); a final
 // factor 1 + 2^-40 in `decided` covers that and the rounding of the error
 // arithmetic itself (fewer than 2^10 operations per value). An absolute
 // 2^-1000 per operation covers any loss to underflow.
@@ -55,12 +59,10 @@ inline Pair two_prod(Lanes a, Lanes b) {
   return {p, fused(a, b, -p)};
 }
 
-// AccurateDWPlusDW: relative error <= 3u^2 / (1 - 4u).
+// x + y with |error| <= 3.01u^2 (|x.hi| + |y.hi|) (above), normalized.
 inline Pair add(Pair x, Pair y) {
   const Pair s = two_sum(x.hi, y.hi);
-  const Pair t = two_sum(x.lo, y.lo);
-  const Pair v = fast_two_sum(s.hi, s.lo + t.hi);
-  return fast_two_sum(v.hi, t.lo + v.lo);
+  return two_sum(s.hi, s.lo + (x.lo + y.lo));
 }
 
 // DWTimesDW3: relative error <= 5u^2.
@@ -70,7 +72,12 @@ inline Pair multiply(Pair x, Pair y) {
   return fast_two_sum(c.hi, c.lo + low);
 }
 
-inline constexpr double kAddError = 0x1p-104;       // >= 3u^2 (1 + u) / (1 - 4u)
+inline Pair operator+(Pair x, Pair y) { return add(x, y); }
+inline Pair operator-(Pair x) { return {-x.hi, -x.lo}; }
+inline Pair operator-(Pair x, Pair y) { return add(x, -y); }
+inline Pair operator*(Pair x, Pair y) { return multiply(x, y); }
+
+inline constexpr double kAddError = 0x1p-104;       // >= 3.01u^2 (1 + u), of |x.hi| + |y.hi|
 inline constexpr double kMultiplyError = 0x1p-103;  // >= 5u^2 (1 + u)
 inline constexpr double kUnderflowSlack = 0x1p-1000;
 
@@ -85,7 +92,8 @@ inline Bounded exact(Pair x) { return {x, splat(0)}; }
 
 inline Bounded operator+(const Bounded& x, const Bounded& y) {
   const Pair z = add(x.value, y.value);
-  return {z, (x.error + y.error) + (kAddError * magnitude(z.hi) + kUnderflowSlack)};
+  return {z, (x.error + y.error) +
+                 (kAddError * (magnitude(x.value.hi) + magnitude(y.value.hi)) + kUnderflowSlack)};
 }
 
 inline Bounded operator-(const Bounded& x) { return {{-x.value.hi, -x.value.lo}, x.error}; }
@@ -105,16 +113,27 @@ inline Bounded scaled(const Bounded& x, double power_of_two) {
           x.error * __builtin_fabs(power_of_two) + kUnderflowSlack};
 }
 
+// A bound on a family of Bounded values: value.hi >= |value| and error >=
+// the error of each member. Subtraction adds, so each result bounds the
+// magnitude of every signed instance of the same expression, and its error
+// (every term monotone in the operands' magnitudes and errors) bounds theirs.
+struct Envelope {
+  Bounded bound;
+};
+inline Envelope operator+(const Envelope& x, const Envelope& y) { return {x.bound + y.bound}; }
+inline Envelope operator-(const Envelope& x, const Envelope& y) { return {x.bound + y.bound}; }
+inline Envelope operator*(const Envelope& x, const Envelope& y) { return {x.bound * y.bound}; }
+
 // Lanes where the exact value (within `error` of hi + lo, hi + lo normalized)
 // rounds to hi in round-to-nearest: then hi is the correctly rounded double.
 // fl(hi + w) == hi for w above lo + error and for w below lo - error brackets
 // the exact value between two numbers that both round to hi (rounding is
 // monotone); w is taken wide enough that its own rounding cannot bring it
 // inside. Non-finite lanes and tiny magnitudes (< 2^-900) are never decided.
-inline Mask decided(const Bounded& y) {
-  const Lanes hi = y.value.hi;
-  const Lanes lo = y.value.lo;
-  const Lanes margin = y.error * (1 + 0x1p-40) + magnitude(hi) * 0x1p-104;
+inline Mask decided(const Pair& y, Lanes error) {
+  const Lanes hi = y.hi;
+  const Lanes lo = y.lo;
+  const Lanes margin = error * (1 + 0x1p-40) + magnitude(hi) * 0x1p-104;
   const Lanes up = hi + (lo + margin);
   const Lanes down = hi + (lo - margin);
   return (up == hi) & (down == hi) & (magnitude(hi) > splat(0x1p-900)) &

@@ -30,8 +30,14 @@ constexpr double kTrigError = 0x1p-76;
 constexpr double kReductionErrorPerStep = 0x1p-94;
 
 struct Trig {
-  Bounded sin, cos;
+  Pair sin, cos;
 };
+
+// The bound on sin_cos's error for an argument within `argument_error` of
+// y and a reduction by |j| <= j_max steps.
+Lanes trig_error(Lanes argument_error, Lanes j_max) {
+  return argument_error + (kTrigError + j_max * kReductionErrorPerStep);
+}
 
 // table[index] per lane (the masked form: the plain one reads an
 // uninitialized register in GCC 12's header).
@@ -40,14 +46,15 @@ inline Lanes gather(const double* table, __m128i index) {
                                   _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
 }
 
-// sin and cos of base pi/128 + y, for |y.hi| <= 2^9 and base in 0..255.
-Trig sin_cos(const Bounded& y, __m128i base, const DoubleDoubleTrigTable& t) {
-  const Lanes j = lanes::nearest_integer(y.value.hi * t.steps_per_radian);  // |j| < 2^15
+// sin and cos of base pi/128 + y, for |y.hi| <= 2^9 and base in 0..255
+// (error: trig_error with |j| the table steps taken, below 2^15).
+Trig sin_cos(const Pair& y, __m128i base, const DoubleDoubleTrigTable& t) {
+  const Lanes j = lanes::nearest_integer(y.hi * t.steps_per_radian);
   // d = y - j pi/128: j reduce1 and its difference with y.hi are exact; the
   // rest are terms below |j| 2^-44.
-  const Pair r = lanes::two_sum(y.value.hi, -j * t.reduce1);
+  const Pair r = lanes::two_sum(y.hi, -j * t.reduce1);
   const Pair jr2 = lanes::two_prod(j, splat(t.reduce2));
-  const Lanes low = ((r.lo + y.value.lo) - jr2.hi) - (jr2.lo + j * t.reduce3);
+  const Lanes low = ((r.lo + y.lo) - jr2.hi) - (jr2.lo + j * t.reduce3);
   const Pair d = lanes::two_sum(r.hi, low);
   // sin d = d.hi + c3 + sin_small with c3 = -d.hi^3 / 6 as a pair (exact
   // products, 1/6 as a pair) and sin_small = d.lo, d.lo's first-order share
@@ -97,8 +104,23 @@ Trig sin_cos(const Bounded& y, __m128i base, const DoubleDoubleTrigTable& t) {
                            (c_lo * q_hi - s_lo * d.hi - s_lo * c3_hi)) -
                           s_hi * sin_small) +
                          c_hi * q_lo;
-  const Lanes error = y.error + (kTrigError + magnitude(j) * kReductionErrorPerStep);
-  return {{lanes::two_sum(a3.hi, sin_rest), error}, {lanes::two_sum(b3.hi, cos_rest), error}};
+  return {lanes::two_sum(a3.hi, sin_rest), lanes::two_sum(b3.hi, cos_rest)};
+}
+
+// The closed form (double_double_slip.hpp), one text for the lanes' values
+// (Pair) and for the bounds on their errors (Envelope).
+template <class V>
+V velocity_at(const V& v0, const V& b, const V& sr, const V& tau, const V& cos_tau) {
+  return v0 - b * cos_tau - sr * tau;
+}
+template <class V>
+V acceleration_at(const V& wb, const V& wsr, const V& sin_tau) {
+  return wb * sin_tau - wsr;
+}
+template <class V>
+V position_at(const V& x0, const V& w_over_omega, const V& half_sr_over_omega,
+              const V& b_over_omega, const V& h, const V& sin_tau) {
+  return x0 + h * (w_over_omega - half_sr_over_omega * h) - b_over_omega * sin_tau;
 }
 
 // n / d with |error| <= 2^-100 |n / d| (9 u^2 by the residual's analysis:
@@ -117,13 +139,14 @@ bool finite(double x) { return x - x == 0; }
 }  // namespace
 
 void double_double_sin_cos(double hi, double lo, double out[5]) {
-  const Trig trig =
-      sin_cos(exact(Pair{splat(hi), splat(lo)}), _mm_set1_epi32(0), double_double_trig_table());
-  out[0] = first(trig.sin.value.hi);
-  out[1] = first(trig.sin.value.lo);
-  out[2] = first(trig.cos.value.hi);
-  out[3] = first(trig.cos.value.lo);
-  out[4] = first(trig.sin.error);
+  const DoubleDoubleTrigTable& table = double_double_trig_table();
+  const Trig trig = sin_cos(Pair{splat(hi), splat(lo)}, _mm_set1_epi32(0), table);
+  out[0] = first(trig.sin.hi);
+  out[1] = first(trig.sin.lo);
+  out[2] = first(trig.cos.hi);
+  out[3] = first(trig.cos.lo);
+  out[4] = first(
+      trig_error(splat(0), magnitude(lanes::nearest_integer(splat(hi) * table.steps_per_radian))));
 }
 
 DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
@@ -157,9 +180,12 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
   const Bounded r = quotient(s.friction, mass_omega);
   const Bounded inverse_omega = quotient(1.0, Pair{omega, splat(0)});
   const Bounded angle = exact(a);
-  const Trig start = sin_cos(angle - base_angle, _mm_set1_epi32(base_index_), table);
+  const Bounded start_offset = angle - base_angle;  // |.| <= pi/256: no table step
+  const Trig start_trig = sin_cos(start_offset.value, _mm_set1_epi32(base_index_), table);
+  const Lanes start_error = trig_error(start_offset.error, splat(1));
+  const Bounded start_sin{start_trig.sin, start_error}, start_cos{start_trig.cos, start_error};
   const Bounded sr = s.sign > 0 ? r : -r;
-  const Bounded moving = exact(splat(s.v_begin)) + b * start.cos;  // v_a + b cos a
+  const Bounded moving = exact(splat(s.v_begin)) + b * start_cos;  // v_a + b cos a
   const Bounded b_over_omega = b * inverse_omega;
 
   const auto keep = [](const Bounded& c) {
@@ -171,11 +197,12 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
   sr_ = keep(sr);
   wb_ = keep(exact(omega) * b);
   wsr_ = keep(exact(omega) * sr);
-  x0_ = keep(exact(splat(s.x_begin)) + b_over_omega * start.sin);
+  x0_ = keep(exact(splat(s.x_begin)) + b_over_omega * start_sin);
   w_over_omega_ = keep(moving * inverse_omega);
   b_over_omega_ = keep(b_over_omega);
   half_sr_over_omega_ = keep(lanes::scaled(sr * inverse_omega, 0.5));
   omega_ = s.omega;
+  t_begin_ = s.t_begin;
   a_hi_ = first(a.hi);
   a_lo_ = first(a.lo);
   const Constant* const all[] = {
@@ -183,42 +210,80 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
       &half_sr_over_omega_};
   for (const Constant* c : all)
     if (!(finite(c->hi) && finite(c->lo) && finite(c->error))) return;
-  usable_ = true;
+
+  // One set of bounds for the whole phase, from its largest h = w (t_end -
+  // t_a) (two roundings, covered by 2^-50), so that a time's answer does not
+  // depend on the other times evaluated with it. Lanes take only times inside
+  // the phase.
+  if (!(s.t_end >= s.t_begin)) return;
+  t_end_ = s.t_end;
+  const double h_max = (s.t_end - s.t_begin) * s.omega * (1 + 0x1p-50);
+  bounds_ = error_bounds(h_max < kLargestAngle + 1 ? h_max : kLargestAngle + 1);
+  usable_ = finite(bounds_.velocity) && finite(bounds_.acceleration) && finite(bounds_.position);
+}
+
+// Bounds on the errors of v, a and x at every time with |h| <= h_max that a
+// lane accepts (|w t - j_a pi/128| <= kLargestAngle): the closed form on
+// envelopes of its operands.
+DoubleDoubleSlip::ErrorBounds DoubleDoubleSlip::error_bounds(double h_max) const {
+  const DoubleDoubleTrigTable& table = double_double_trig_table();
+  const auto envelope = [](const Constant& c) {
+    return lanes::Envelope{
+        {{splat(__builtin_fabs(c.hi) + __builtin_fabs(c.lo)), splat(0)}, splat(c.error)}};
+  };
+  // |h| <= h_max, |tau| <= |w t_a| + h_max, |y| = |tau - j_a pi/128| <= h_max + pi/256.
+  const double tau_max = __builtin_fabs(a_hi_) + h_max + 1;
+  const lanes::Envelope tau{exact(splat(tau_max))};
+  const lanes::Envelope h{
+      {{splat(h_max), splat(0)},
+       splat(lanes::kAddError * (tau_max + __builtin_fabs(a_hi_)) + lanes::kUnderflowSlack)}};
+  const Lanes y_error =
+      splat(base_angle_.error + lanes::kAddError * (tau_max + __builtin_fabs(base_angle_.hi)) +
+            lanes::kUnderflowSlack);
+  const Lanes steps_max = splat((h_max + 1) * table.steps_per_radian + 1);
+  const lanes::Envelope trig{{{splat(1 + 0x1p-50), splat(0)}, trig_error(y_error, steps_max)}};
+  return {first(velocity_at(envelope(v0_), envelope(b_), envelope(sr_), tau, trig).bound.error),
+          first(acceleration_at(envelope(wb_), envelope(wsr_), trig).bound.error),
+          first(position_at(envelope(x0_), envelope(w_over_omega_), envelope(half_sr_over_omega_),
+                            envelope(b_over_omega_), h, trig)
+                    .bound.error)};
 }
 
 void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
                                 unsigned char* decided) const {
   const DoubleDoubleTrigTable& table = double_double_trig_table();
-  const auto lanes_of = [](const Constant& c) {
-    return Bounded{{splat(c.hi), splat(c.lo)}, splat(c.error)};
-  };
+  const auto lanes_of = [](const Constant& c) { return Pair{splat(c.hi), splat(c.lo)}; };
   const Lanes omega = splat(omega_);
-  const Bounded angle = exact(Pair{splat(a_hi_), splat(a_lo_)});
-  const Bounded base_angle = lanes_of(base_angle_), v0 = lanes_of(v0_), b = lanes_of(b_),
-                sr = lanes_of(sr_), wb = lanes_of(wb_), wsr = lanes_of(wsr_), x0 = lanes_of(x0_),
-                w_over_omega = lanes_of(w_over_omega_), b_over_omega = lanes_of(b_over_omega_),
-                half_sr_over_omega = lanes_of(half_sr_over_omega_);
+  const Pair angle{splat(a_hi_), splat(a_lo_)};
+  const Pair base_angle = lanes_of(base_angle_), v0 = lanes_of(v0_), b = lanes_of(b_),
+             sr = lanes_of(sr_), wb = lanes_of(wb_), wsr = lanes_of(wsr_), x0 = lanes_of(x0_),
+             w_over_omega = lanes_of(w_over_omega_), b_over_omega = lanes_of(b_over_omega_),
+             half_sr_over_omega = lanes_of(half_sr_over_omega_);
+  const Lanes velocity_error = splat(bounds_.velocity);
+  const Lanes acceleration_error = splat(bounds_.acceleration);
+  const Lanes position_error = splat(bounds_.position);
   const __m128i base = _mm_set1_epi32(base_index_);
   for (std::size_t i = 0; i < n; i += 4) {
     // A short last group repeats its last time in the unused lanes.
     const std::size_t used = n - i < 4 ? n - i : 4;
     const Lanes time{t[i], t[i + (used > 1 ? 1 : 0)], t[i + (used > 2 ? 2 : used - 1)],
                      t[i + used - 1]};
-    const Bounded tau = exact(lanes::two_prod(omega, time));  // w t exactly
-    const Bounded h = tau - angle;
-    const Bounded y = tau - base_angle;
-    const Mask in_range = magnitude(y.value.hi) <= splat(512.0);
+    const Pair tau = lanes::two_prod(omega, time);  // w t exactly
+    const Pair y = tau - base_angle;
+    const Mask in_range = (time >= splat(t_begin_)) & (time <= splat(t_end_)) &
+                          (magnitude(y.hi) <= splat(kLargestAngle));
     const Trig trig = sin_cos(y, base, table);
-    const Bounded velocity = v0 - b * trig.cos - sr * tau;
-    const Bounded acceleration = wb * trig.sin - wsr;
-    const Bounded position =
-        x0 + w_over_omega * h - b_over_omega * trig.sin - half_sr_over_omega * (h * h);
-    const Mask ok = in_range & lanes::decided(velocity) & lanes::decided(acceleration) &
-                    lanes::decided(position);
+    const Pair velocity = velocity_at(v0, b, sr, tau, trig.cos);
+    const Pair acceleration = acceleration_at(wb, wsr, trig.sin);
+    const Pair position =
+        position_at(x0, w_over_omega, half_sr_over_omega, b_over_omega, tau - angle, trig.sin);
+    const Mask ok = in_range & lanes::decided(velocity, velocity_error) &
+                    lanes::decided(acceleration, acceleration_error) &
+                    lanes::decided(position, position_error);
     for (std::size_t k = 0; k < used; ++k) {
-      x[i + k] = position.value.hi[k];
-      v[i + k] = velocity.value.hi[k];
-      a[i + k] = acceleration.value.hi[k];
+      x[i + k] = position.hi[k];
+      v[i + k] = velocity.hi[k];
+      a[i + k] = acceleration.hi[k];
       decided[i + k] = ok[k] != 0;
     }
   }

@@ -10,7 +10,7 @@
 // tau = w t and a = w t_a exactly, b = B / (m w), r = R / (m w):
 //   v = (v_a + b cos a + s r a) - b cos tau - s r tau
 //   a = w b sin tau - w s r
-//   x = (x_a + b sin a / w) + (v_a + b cos a) / w h - b / w sin tau - s r / (2 w) h^2,
+//   x = (x_a + b sin a / w) + h ((v_a + b cos a) / w - s r / (2 w) h) - b / w sin tau,
 // h = tau - a.
 #pragma once
 
@@ -24,6 +24,7 @@ struct SeedSlipStart {
   double omega, amplitude, mass, friction;
   int sign;  // +1 forward, -1 backward
   double t_begin, x_begin, v_begin;
+  double t_end;  // the phase's end: times beyond it are not taken
 };
 
 // The fast path's sin and cos of y = hi + lo (|hi| <= 512), each as a
@@ -42,7 +43,9 @@ class DoubleDoubleSlip {
 
   // For i < n: decided[i] = 1 and x[i], v[i], a[i] the correctly rounded
   // doubles of the closed form at t[i], or decided[i] = 0 (then x, v, a are
-  // unspecified). Lanes with |w t - w t_a| beyond about 500 are undecided.
+  // unspecified). Times outside [t_begin, t_end] and beyond about 500 radians
+  // of forcing phase from the start are undecided. Whether a time is decided
+  // does not depend on the other times.
   void evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
                 unsigned char* decided) const;
 
@@ -58,6 +61,15 @@ class DoubleDoubleSlip {
   int base_index_ = 0;          // j_a mod 256: w t_a = j_a pi/128 + small
   Constant base_angle_;         // j_a pi/128
   Constant v0_, b_, sr_, wb_, wsr_, x0_, w_over_omega_, b_over_omega_, half_sr_over_omega_;
+  double t_begin_ = 0, t_end_ = 0;
+
+  // The largest |w t - j_a pi/128| a lane accepts (the reduction's range).
+  static constexpr double kLargestAngle = 512;
+  struct ErrorBounds {
+    double velocity, acceleration, position;
+  };
+  ErrorBounds error_bounds(double h_max) const;
+  ErrorBounds bounds_{};  // for the whole phase
 };
 
 }  // namespace frictionref::detail
