@@ -1,5 +1,5 @@
 // Double-double arithmetic on four lanes at once, with a running error bound
-// per value: the arithmetic of the fast paths (docs/theory.md 11).
+// per value: the arithmetic of the fast paths (docs/theory.md 10).
 //
 // A value is hi + lo (|lo| <= ulp(hi) / 2) in each lane of an AVX2 register,
 // and a Bounded value also carries e >= |hi + lo - exact|. The algorithms and

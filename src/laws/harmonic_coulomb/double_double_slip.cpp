@@ -20,12 +20,13 @@ using lanes::Pair;
 using lanes::splat;
 
 // The error of sin_cos beyond its argument's, for |d| <= 0.01228 (docs/theory.md
-// 11): cos d - 1 below its leading term, rounded in double, 5.3e-25; the
-// terms of the sum formulas rounded in double, 2.2e-25; the dropped products
-// S.lo (cos d - 1 + d^2/2) and C.lo (sin d - d.hi + d.hi^3/6), 5.4e-26; sin d
-// beyond d.hi - d.hi^3/6 (series and roundings), 3.8e-27; the table, 1.2e-32.
-// Together 8.1e-25 < 2^-80; the bound is 16 times that. The reduction adds
-// |j| 2^-94 (its sums of terms up to |j| 2^-44).
+// 10.3): the d^4 terms of cos d - 1 (below 9.5e-10) with eleven roundings
+// of u, 1.2e-24; the sum formulas' terms rounded in double, 2.2e-25; the
+// dropped products S.lo (cos d - 1 + d^2/2) and C.lo (sin d - d.hi +
+// d.hi^3/6), 5.4e-26; sin d beyond d.hi - d.hi^3/6 (series, roundings),
+// 3.8e-27; the table, 1.2e-32. Together 1.5e-24 < 2^-79; the bound is 9
+// times that. The reduction adds |j| 2^-94 (two roundings of terms up to
+// |j| 2^-44: |j| 2^-96).
 constexpr double kTrigError = 0x1p-76;
 constexpr double kReductionErrorPerStep = 0x1p-94;
 

@@ -1,4 +1,4 @@
-// The fast path of the seed's dense output (docs/theory.md 11): a slip's x, v
+// The fast path of the seed's dense output (docs/theory.md 10): a slip's x, v
 // and a at many times, four at once, in double-double arithmetic with a
 // rigorous error bound. Where the bound shows which double the exact closed
 // form rounds to, that double is the answer (it is the correctly rounded
