@@ -5,6 +5,7 @@
 // correctly rounded one and the fast path is.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <iostream>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "frictionref/exact_engine.hpp"
@@ -149,6 +151,8 @@ TEST(DenseFastPath, SameRowsAsTheLongDoublePathOnRandomModels) {
   if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
   testing::ModelStream stream(2026);
   std::uint64_t rows = 0, differing = 0, fast_closer = 0;
+  // By decade of |w t| (below 1 rad, 1-10, ... up to 1e10): rows, differing.
+  std::uint64_t rows_by_decade[11] = {}, differing_by_decade[11] = {};
   for (int i = 0; i < 100000; ++i) {
     const testing::RandomModel r = stream.next();
     ExactEngine engine(r.model, r.t_end);
@@ -165,9 +169,14 @@ TEST(DenseFastPath, SameRowsAsTheLongDoublePathOnRandomModels) {
       std::optional<ExactSlip> exact;
       for (int j = 0; j < kTimes; ++j) {
         ++rows;
+        const double phase_angle = std::fabs(r.model.omega * times[j]);
+        const int decade =
+            phase_angle < 1 ? 0 : std::min(10, static_cast<int>(std::log10(phase_angle)) + 1);
+        ++rows_by_decade[decade];
         const State slow = formula.long_double_at(times[j]);
         if (same(fast[j], slow)) continue;
         ++differing;
+        ++differing_by_decade[decade];
         if (!exact) exact.emplace(r.model, phase);
         const Exact e = exact->at(times[j]);
         const bool fast_rounded = fast[j].x == e.x && fast[j].v == e.v && fast[j].a == e.a;
@@ -180,6 +189,11 @@ TEST(DenseFastPath, SameRowsAsTheLongDoublePathOnRandomModels) {
             << " differ from the long double path, and in all of them the fast row is the "
                "correctly rounded one ("
             << fast_closer << ")\n";
+  for (int d = 0; d < 11; ++d)
+    std::cout << "  |w t| "
+              << (d == 0 ? "below 1" : "1e" + std::to_string(d - 1) + "..1e" + std::to_string(d))
+              << " rad: " << differing_by_decade[d] << " of " << rows_by_decade[d]
+              << " rows differ\n";
   EXPECT_GT(rows, 300000u);
   RecordProperty("rows", std::to_string(rows));
   RecordProperty("differing_fast_correctly_rounded", std::to_string(fast_closer));
