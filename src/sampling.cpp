@@ -137,17 +137,21 @@ std::vector<State> sample_at(const Model& model, const std::vector<double>& time
   Phase phase;
   engine.next(phase);
   std::optional<PhaseEvaluator> law(std::in_place, model, phase);
-  states.reserve(times.size());
-  for (double t : times) {
+  states.resize(times.size());
+  for (std::size_t i = 0; i < times.size();) {
     // An engine that stops early (a status, never expected) must not loop here.
     bool moved = false;
-    while (t >= phase.t_end && phase.t_end < last) {
+    while (times[i] >= phase.t_end && phase.t_end < last) {
       if (!engine.next(phase))
         throw std::runtime_error("exact engine: " + engine.summary().message);
       moved = true;
     }
     if (moved) law.emplace(model, phase);
-    states.push_back((*law)(t));
+    // This time and the following ones in the same phase, evaluated together.
+    std::size_t end = i + 1;
+    while (end < times.size() && (times[end] < phase.t_end || phase.t_end >= last)) ++end;
+    (*law)(&times[i], end - i, &states[i]);
+    i = end;
   }
   return states;
 }

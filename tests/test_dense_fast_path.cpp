@@ -199,7 +199,8 @@ TEST(DenseFastPath, SameRowsAsTheLongDoublePathOnRandomModels) {
   RecordProperty("differing_fast_correctly_rounded", std::to_string(fast_closer));
 }
 
-// The sampler's batches give the rows of one evaluation per time.
+// The sampler's and sample_at's batches give the rows of one evaluation per
+// time.
 TEST(DenseFastPath, SamplerRowsAreThoseOfSingleEvaluations) {
   testing::ModelStream stream(5);
   for (int i = 0; i < 300; ++i) {
@@ -215,8 +216,10 @@ TEST(DenseFastPath, SamplerRowsAreThoseOfSingleEvaluations) {
     ASSERT_TRUE(engine.next(phase));
     State row;
     std::uint64_t count = 0;
+    std::vector<State> rows;
     while (sampler.next(row)) {
       ++count;
+      rows.push_back(row);
       // The sampler's rule: a time at a boundary belongs to the next phase.
       while (row.t >= phase.t_end && phase.t_end < grid.t_end && engine.next(phase)) {
       }
@@ -224,6 +227,19 @@ TEST(DenseFastPath, SamplerRowsAreThoseOfSingleEvaluations) {
       ASSERT_TRUE(same(row, single)) << testing::describe(r) << " row " << count;
     }
     EXPECT_GE(count, 333u);
+    // sample_at evaluates its times in batches too: the grid's times (no
+    // event rows, which carry the next phase) give the same rows.
+    std::vector<double> times;
+    std::vector<State> expected;
+    for (const State& s : rows)
+      if (!grid.include_events) {
+        times.push_back(s.t);
+        expected.push_back(s);
+      }
+    const std::vector<State> again = sample_at(r.model, times);
+    ASSERT_EQ(again.size(), expected.size());
+    for (std::size_t k = 0; k < again.size(); ++k)
+      ASSERT_TRUE(same(again[k], expected[k])) << testing::describe(r) << " time " << k;
   }
 }
 

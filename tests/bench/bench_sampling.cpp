@@ -84,11 +84,13 @@ BENCHMARK(BM_DenseSamples)->Arg(30)->Arg(70)->Unit(benchmark::kMillisecond);
 
 // The formula alone over the same rows: /L/1 the fast path with its fallback
 // (at_many, as the sampler calls it), /L/0 the long double path for every
-// row (the dense output before the fast path). The engine's phases are
-// computed once, outside the timing.
+// row (the dense output before the fast path), /L/2 the fast path one row
+// per call (one useful lane of four: the cost of a double-double evaluation
+// that cannot be spread over lanes, as an event's chain could not). The
+// engine's phases are computed once, outside the timing.
 void BM_DenseFormula(benchmark::State& state) {
   const Model model = dense_model(state.range(0));
-  const bool fast = state.range(1) != 0;
+  const std::int64_t mode = state.range(1);
   std::vector<Phase> phases;
   std::vector<std::vector<double>> rows;
   for_each_phase_rows(model, dense_grid(), [&](const Phase& phase, const std::vector<double>& t) {
@@ -102,8 +104,10 @@ void BM_DenseFormula(benchmark::State& state) {
       const detail::HarmonicCoulombFormula<double> formula(model, phases[p]);
       const std::vector<double>& t = rows[p];
       if (out.size() < t.size()) out.resize(t.size());
-      if (fast) {
+      if (mode == 1) {
         formula.at_many(t.data(), t.size(), out.data());
+      } else if (mode == 2) {
+        for (std::size_t i = 0; i < t.size(); ++i) out[i] = formula.at(t[i]);
       } else {
         for (std::size_t i = 0; i < t.size(); ++i) out[i] = formula.long_double_at(t[i]);
       }
@@ -120,6 +124,7 @@ BENCHMARK(BM_DenseFormula)
     ->Args({30, 1})
     ->Args({70, 0})
     ->Args({70, 1})
+    ->Args({30, 2})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

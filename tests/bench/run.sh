@@ -104,7 +104,7 @@ for b in rows:
         parts = dict(p.split(":") for p in name.split("/")[1:])
         fast = parts["fast"] == "1"
         label = (f"{family} lambda={int(parts['lambda']) / 100:g} "
-                 + ("fast path" if fast else "long double"))
+                 + {"0": "long double", "1": "fast path", "2": "fast path, one row per call"}[parts["fast"]])
         if fast:
             slow = name.replace("fast:1", "fast:0")
             if slow in units_of:

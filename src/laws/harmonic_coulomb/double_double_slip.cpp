@@ -29,6 +29,9 @@ using lanes::splat;
 // |j| 2^-44: |j| 2^-96).
 constexpr double kTrigError = 0x1p-76;
 constexpr double kReductionErrorPerStep = 0x1p-94;
+// The ranges of |h| = |w t - w t_a| with bounds of their own.
+constexpr int kRanges = 4;
+constexpr double kRange[kRanges] = {2, 8, 64, 513};
 
 struct Trig {
   Pair sin, cos;
@@ -203,7 +206,6 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
   b_over_omega_ = keep(b_over_omega);
   half_sr_over_omega_ = keep(lanes::scaled(sr * inverse_omega, 0.5));
   omega_ = s.omega;
-  t_begin_ = s.t_begin;
   a_hi_ = first(a.hi);
   a_lo_ = first(a.lo);
   const Constant* const all[] = {
@@ -212,42 +214,40 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
   for (const Constant* c : all)
     if (!(finite(c->hi) && finite(c->lo) && finite(c->error))) return;
 
-  // One set of bounds for the whole phase, from its largest h = w (t_end -
-  // t_a) (two roundings, covered by 2^-50), so that a time's answer does not
-  // depend on the other times evaluated with it. Lanes take only times inside
-  // the phase.
-  if (!(s.t_end >= s.t_begin)) return;
-  t_end_ = s.t_end;
-  const double h_max = (s.t_end - s.t_begin) * s.omega * (1 + 0x1p-50);
-  bounds_ = error_bounds(h_max < kLargestAngle + 1 ? h_max : kLargestAngle + 1);
-  usable_ = finite(bounds_.velocity) && finite(bounds_.acceleration) && finite(bounds_.position);
-}
-
-// Bounds on the errors of v, a and x at every time with |h| <= h_max that a
-// lane accepts (|w t - j_a pi/128| <= kLargestAngle): the closed form on
-// envelopes of its operands.
-DoubleDoubleSlip::ErrorBounds DoubleDoubleSlip::error_bounds(double h_max) const {
-  const DoubleDoubleTrigTable& table = double_double_trig_table();
+  // Bounds on the errors of x, v and a for |h| up to 2, 8, 64 and 513 rad (one
+  // range per lane), from the closed form on envelopes of its operands:
+  // |tau| <= |w t_a| + h_max, |y| = |tau - j_a pi/128| <= h_max + pi/256. A
+  // time takes the bounds of the smallest range that holds its own h, so its
+  // answer depends on nothing else.
   const auto envelope = [](const Constant& c) {
     return lanes::Envelope{
         {{splat(__builtin_fabs(c.hi) + __builtin_fabs(c.lo)), splat(0)}, splat(c.error)}};
   };
-  // |h| <= h_max, |tau| <= |w t_a| + h_max, |y| = |tau - j_a pi/128| <= h_max + pi/256.
-  const double tau_max = __builtin_fabs(a_hi_) + h_max + 1;
-  const lanes::Envelope tau{exact(splat(tau_max))};
+  const Lanes h_max{kRange[0], kRange[1], kRange[2], kRange[3]};
+  const Lanes tau_max = splat(__builtin_fabs(a_hi_)) + h_max + 1;
+  const lanes::Envelope tau{exact(tau_max)};
   const lanes::Envelope h{
-      {{splat(h_max), splat(0)},
-       splat(lanes::kAddError * (tau_max + __builtin_fabs(a_hi_)) + lanes::kUnderflowSlack)}};
-  const Lanes y_error =
-      splat(base_angle_.error + lanes::kAddError * (tau_max + __builtin_fabs(base_angle_.hi)) +
-            lanes::kUnderflowSlack);
-  const Lanes steps_max = splat((h_max + 1) * table.steps_per_radian + 1);
+      {{h_max, splat(0)},
+       lanes::kAddError * (tau_max + __builtin_fabs(a_hi_)) + lanes::kUnderflowSlack}};
+  const Lanes y_error = base_angle_.error +
+                        lanes::kAddError * (tau_max + __builtin_fabs(base_angle_.hi)) +
+                        lanes::kUnderflowSlack;
+  const Lanes steps_max = (h_max + 1) * table.steps_per_radian + 1;
   const lanes::Envelope trig{{{splat(1 + 0x1p-50), splat(0)}, trig_error(y_error, steps_max)}};
-  return {first(velocity_at(envelope(v0_), envelope(b_), envelope(sr_), tau, trig).bound.error),
-          first(acceleration_at(envelope(wb_), envelope(wsr_), trig).bound.error),
-          first(position_at(envelope(x0_), envelope(w_over_omega_), envelope(half_sr_over_omega_),
-                            envelope(b_over_omega_), h, trig)
-                    .bound.error)};
+  const Lanes velocity =
+      velocity_at(envelope(v0_), envelope(b_), envelope(sr_), tau, trig).bound.error;
+  const Lanes acceleration = acceleration_at(envelope(wb_), envelope(wsr_), trig).bound.error;
+  const Lanes position =
+      position_at(envelope(x0_), envelope(w_over_omega_), envelope(half_sr_over_omega_),
+                  envelope(b_over_omega_), h, trig)
+          .bound.error;
+  for (int k = 0; k < kRanges; ++k) {
+    velocity_error_[k] = velocity[k];
+    acceleration_error_[k] = acceleration[k];
+    position_error_[k] = position[k];
+    if (!(finite(velocity[k]) && finite(acceleration[k]) && finite(position[k]))) return;
+  }
+  usable_ = true;
 }
 
 void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
@@ -260,9 +260,6 @@ void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, doubl
              sr = lanes_of(sr_), wb = lanes_of(wb_), wsr = lanes_of(wsr_), x0 = lanes_of(x0_),
              w_over_omega = lanes_of(w_over_omega_), b_over_omega = lanes_of(b_over_omega_),
              half_sr_over_omega = lanes_of(half_sr_over_omega_);
-  const Lanes velocity_error = splat(bounds_.velocity);
-  const Lanes acceleration_error = splat(bounds_.acceleration);
-  const Lanes position_error = splat(bounds_.position);
   const __m128i base = _mm_set1_epi32(base_index_);
   for (std::size_t i = 0; i < n; i += 4) {
     // A short last group repeats its last time in the unused lanes.
@@ -271,13 +268,26 @@ void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, doubl
                      t[i + used - 1]};
     const Pair tau = lanes::two_prod(omega, time);  // w t exactly
     const Pair y = tau - base_angle;
-    const Mask in_range = (time >= splat(t_begin_)) & (time <= splat(t_end_)) &
-                          (magnitude(y.hi) <= splat(kLargestAngle));
+    const Mask in_range = magnitude(y.hi) <= splat(kLargestAngle);
     const Trig trig = sin_cos(y, base, table);
+    const Pair h = tau - angle;
     const Pair velocity = velocity_at(v0, b, sr, tau, trig.cos);
     const Pair acceleration = acceleration_at(wb, wsr, trig.sin);
     const Pair position =
-        position_at(x0, w_over_omega, half_sr_over_omega, b_over_omega, tau - angle, trig.sin);
+        position_at(x0, w_over_omega, half_sr_over_omega, b_over_omega, h, trig.sin);
+    // The bounds of the smallest range holding |h| (|h| <= |h.hi| (1 + 2^-50)).
+    Mask in[kRanges - 1];
+    for (int k = 0; k < kRanges - 1; ++k)
+      in[k] = magnitude(h.hi) <= splat(kRange[k] * (1 - 0x1p-50));
+    const auto pick = [&](const double* bound) {
+      return in[0]   ? splat(bound[0])
+             : in[1] ? splat(bound[1])
+             : in[2] ? splat(bound[2])
+                     : splat(bound[3]);
+    };
+    const Lanes velocity_error = pick(velocity_error_);
+    const Lanes acceleration_error = pick(acceleration_error_);
+    const Lanes position_error = pick(position_error_);
     const Mask ok = in_range & lanes::decided(velocity, velocity_error) &
                     lanes::decided(acceleration, acceleration_error) &
                     lanes::decided(position, position_error);

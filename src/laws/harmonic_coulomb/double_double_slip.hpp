@@ -24,7 +24,6 @@ struct SeedSlipStart {
   double omega, amplitude, mass, friction;
   int sign;  // +1 forward, -1 backward
   double t_begin, x_begin, v_begin;
-  double t_end;  // the phase's end: times beyond it are not taken
 };
 
 // The fast path's sin and cos of y = hi + lo (|hi| <= 512), each as a
@@ -43,9 +42,9 @@ class DoubleDoubleSlip {
 
   // For i < n: decided[i] = 1 and x[i], v[i], a[i] the correctly rounded
   // doubles of the closed form at t[i], or decided[i] = 0 (then x, v, a are
-  // unspecified). Times outside [t_begin, t_end] and beyond about 500 radians
-  // of forcing phase from the start are undecided. Whether a time is decided
-  // does not depend on the other times.
+  // unspecified). Times beyond about 500 radians of forcing phase from the
+  // start are undecided. Whether a time is decided depends on the start and
+  // that time only (not on the other times, nor on the phase's end).
   void evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
                 unsigned char* decided) const;
 
@@ -61,15 +60,11 @@ class DoubleDoubleSlip {
   int base_index_ = 0;          // j_a mod 256: w t_a = j_a pi/128 + small
   Constant base_angle_;         // j_a pi/128
   Constant v0_, b_, sr_, wb_, wsr_, x0_, w_over_omega_, b_over_omega_, half_sr_over_omega_;
-  double t_begin_ = 0, t_end_ = 0;
-
   // The largest |w t - j_a pi/128| a lane accepts (the reduction's range).
   static constexpr double kLargestAngle = 512;
-  struct ErrorBounds {
-    double velocity, acceleration, position;
-  };
-  ErrorBounds error_bounds(double h_max) const;
-  ErrorBounds bounds_{};  // for the whole phase
+  // Bounds on the errors of v, a and x for |h| up to 2, 8, 64 and 513 rad
+  // (every accepted time has |h| <= 513).
+  double velocity_error_[4] = {}, acceleration_error_[4] = {}, position_error_[4] = {};
 };
 
 }  // namespace frictionref::detail

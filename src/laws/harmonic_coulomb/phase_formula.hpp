@@ -31,7 +31,7 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
       if (phase.kind != PhaseKind::stick && double_double_lanes_available()) {
         fast_.emplace(SeedSlipStart{model.omega, model.amplitude, model.mass, model.friction,
                                     slip_sign(phase.kind), phase.t_begin, phase.x_begin,
-                                    phase.v_begin, phase.t_end});
+                                    phase.v_begin});
         if (!fast_->usable()) fast_.reset();
       }
     }
