@@ -57,7 +57,7 @@ class BasicPhaseEvaluator {
   BasicState<Real> operator()(const Real& t) const;
   // The states at times[0..count) (each as above), written to states[0..count).
   // The same values as one call per time, faster for the seed's model in
-  // double (docs/theory.md 11 evaluates four times at once).
+  // double (docs/theory.md 10 evaluates four times at once).
   void operator()(const Real* times, std::size_t count, BasicState<Real>* states) const;
 
  private:
