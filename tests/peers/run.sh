@@ -70,8 +70,10 @@ if [[ "${PEERS_SOURCE:-}" == HEAD ]]; then
   printf 'git archive HEAD | tar -x -C %s\n' "$tmp/source" >>"$prelude"
   git -C "$repo" archive --format=tar HEAD | tar -x -C "$tmp/source"
   build_dir="$tmp/project"
+  # Without the Python module: `cmake --install` would install it, and only the
+  # library and the CLI are built here.
   run cmake -S "$tmp/source" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release \
-    -DFRICTIONREF_BUILD_TESTS=OFF
+    -DFRICTIONREF_BUILD_TESTS=OFF -DFRICTIONREF_BUILD_PYTHON=OFF
   run cmake --build "$build_dir" -j2 --target frictionref frictionref_cli
   source_args=(--source-head "$(git -C "$repo" rev-parse --short=12 HEAD)")
 elif [[ -z "$build_dir" ]]; then
@@ -82,7 +84,7 @@ elif [[ -z "$build_dir" ]]; then
   run cmake --build --preset release -j2 --target frictionref frictionref_cli
 else
   if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
-    run cmake -S "$repo" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release
+    run cmake -S "$repo" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DFRICTIONREF_BUILD_PYTHON=OFF
   fi
   run cmake --build "$build_dir" -j2 --target frictionref frictionref_cli
 fi
