@@ -77,6 +77,24 @@ bool same(const State& s, const State& r) {
 
 bool available() { return detail::double_double_lanes_available(); }
 
+// Each slip among the first six phases of `count` random models of the
+// stream `seed` (random_models.hpp), with its formula; stops at the first
+// fatal failure.
+template <class Visit>
+void for_each_random_slip(std::uint64_t seed, int count, Visit visit) {
+  testing::ModelStream stream(seed);
+  for (int i = 0; i < count && !::testing::Test::HasFatalFailure(); ++i) {
+    const testing::RandomModel r = stream.next();
+    ExactEngine engine(r.model, r.t_end);
+    Phase phase;
+    for (int k = 0; k < 6 && engine.next(phase); ++k) {
+      if (phase.kind == PhaseKind::stick) continue;
+      const detail::HarmonicCoulombFormula<double> formula(r.model, phase);
+      visit(r, phase, formula);
+    }
+  }
+}
+
 TEST(DoubleDoubleSinCos, WithinItsBoundOfFiftyDigits) {
   if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
   std::mt19937_64 random(20261127);
@@ -113,32 +131,27 @@ TEST(DoubleDoubleSinCos, WithinItsBoundOfFiftyDigits) {
 // its end (where v -> 0 and the bound is tested hardest: the terms cancel).
 TEST(DoubleDoubleSlip, DecidedValuesAreCorrectlyRounded) {
   if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
-  testing::ModelStream stream(11);
   std::mt19937_64 random(7);
   const auto unit = [&] { return std::ldexp(static_cast<double>(random() >> 11), -53); };
   std::uint64_t tried = 0, decided = 0;
-  for (int i = 0; i < 3000; ++i) {
-    const testing::RandomModel r = stream.next();
-    ExactEngine engine(r.model, r.t_end);
-    Phase phase;
-    for (int k = 0; k < 6 && engine.next(phase); ++k) {
-      if (phase.kind == PhaseKind::stick) continue;
-      const detail::HarmonicCoulombFormula<double> formula(r.model, phase);
-      for (int j = 0; j < 8; ++j) {
-        const double fraction = j < 4 ? unit() : 1 - std::pow(10.0, -12 * unit());
-        const double t = phase.t_begin + fraction * phase.duration();
-        if (!(t > phase.t_begin && t < phase.t_end)) continue;
-        ++tried;
-        State fast;
-        if (!formula.fast_at(t, fast)) continue;
-        ++decided;
-        const Exact e = ExactSlip(r.model, phase).at(t);
-        ASSERT_EQ(fast.x, e.x) << testing::describe(r) << " t=" << t;
-        ASSERT_EQ(fast.v, e.v) << testing::describe(r) << " t=" << t;
-        ASSERT_EQ(fast.a, e.a) << testing::describe(r) << " t=" << t;
-      }
-    }
-  }
+  for_each_random_slip(11, 3000,
+                       [&](const testing::RandomModel& r, const Phase& phase,
+                           const detail::HarmonicCoulombFormula<double>& formula) {
+                         for (int j = 0; j < 8; ++j) {
+                           const double fraction =
+                               j < 4 ? unit() : 1 - std::pow(10.0, -12 * unit());
+                           const double t = phase.t_begin + fraction * phase.duration();
+                           if (!(t > phase.t_begin && t < phase.t_end)) continue;
+                           ++tried;
+                           State fast;
+                           if (!formula.fast_at(t, fast)) continue;
+                           ++decided;
+                           const Exact e = ExactSlip(r.model, phase).at(t);
+                           ASSERT_EQ(fast.x, e.x) << testing::describe(r) << " t=" << t;
+                           ASSERT_EQ(fast.v, e.v) << testing::describe(r) << " t=" << t;
+                           ASSERT_EQ(fast.a, e.a) << testing::describe(r) << " t=" << t;
+                         }
+                       });
   std::cout << decided << " of " << tried << " states decided by the fast path\n";
   EXPECT_GT(tried, 10000u);
   EXPECT_GT(decided, tried / 2);
@@ -149,42 +162,37 @@ TEST(DoubleDoubleSlip, DecidedValuesAreCorrectlyRounded) {
 // the correctly rounded one; there the fast row must be (50 digits).
 TEST(DenseFastPath, SameRowsAsTheLongDoublePathOnRandomModels) {
   if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
-  testing::ModelStream stream(2026);
   std::uint64_t rows = 0, differing = 0, fast_closer = 0;
   // By decade of |w t| (below 1 rad, 1-10, ... up to 1e10): rows, differing.
   std::uint64_t rows_by_decade[11] = {}, differing_by_decade[11] = {};
-  for (int i = 0; i < 100000; ++i) {
-    const testing::RandomModel r = stream.next();
-    ExactEngine engine(r.model, r.t_end);
-    Phase phase;
-    for (int k = 0; k < 6 && engine.next(phase); ++k) {
-      if (phase.kind == PhaseKind::stick) continue;
-      const detail::HarmonicCoulombFormula<double> formula(r.model, phase);
-      constexpr int kTimes = 3;
-      double times[kTimes];
-      for (int j = 0; j < kTimes; ++j)
-        times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
-      State fast[kTimes];
-      formula.at_many(times, kTimes, fast);
-      std::optional<ExactSlip> exact;
-      for (int j = 0; j < kTimes; ++j) {
-        ++rows;
-        const double phase_angle = std::fabs(r.model.omega * times[j]);
-        const int decade =
-            phase_angle < 1 ? 0 : std::min(10, static_cast<int>(std::log10(phase_angle)) + 1);
-        ++rows_by_decade[decade];
-        const State slow = formula.long_double_at(times[j]);
-        if (same(fast[j], slow)) continue;
-        ++differing;
-        ++differing_by_decade[decade];
-        if (!exact) exact.emplace(r.model, phase);
-        const Exact e = exact->at(times[j]);
-        const bool fast_rounded = fast[j].x == e.x && fast[j].v == e.v && fast[j].a == e.a;
-        ASSERT_TRUE(fast_rounded) << testing::describe(r) << " t=" << times[j];
-        ++fast_closer;
-      }
-    }
-  }
+  for_each_random_slip(
+      2026, 100000,
+      [&](const testing::RandomModel& r, const Phase& phase,
+          const detail::HarmonicCoulombFormula<double>& formula) {
+        constexpr int kTimes = 3;
+        double times[kTimes];
+        for (int j = 0; j < kTimes; ++j)
+          times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
+        State fast[kTimes];
+        formula.at_many(times, kTimes, fast);
+        std::optional<ExactSlip> exact;
+        for (int j = 0; j < kTimes; ++j) {
+          ++rows;
+          const double phase_angle = std::fabs(r.model.omega * times[j]);
+          const int decade =
+              phase_angle < 1 ? 0 : std::min(10, static_cast<int>(std::log10(phase_angle)) + 1);
+          ++rows_by_decade[decade];
+          const State slow = formula.long_double_at(times[j]);
+          if (same(fast[j], slow)) continue;
+          ++differing;
+          ++differing_by_decade[decade];
+          if (!exact) exact.emplace(r.model, phase);
+          const Exact e = exact->at(times[j]);
+          const bool fast_rounded = fast[j].x == e.x && fast[j].v == e.v && fast[j].a == e.a;
+          ASSERT_TRUE(fast_rounded) << testing::describe(r) << " t=" << times[j];
+          ++fast_closer;
+        }
+      });
   std::cout << rows << " rows; " << differing
             << " differ from the long double path, and in all of them the fast row is the "
                "correctly rounded one ("
