@@ -101,10 +101,9 @@ bool UniformSampler::next(State& state) {
   // are served from the buffer.
   const double limit = options_.last_grid_limit();
   std::size_t count = 0;
-  for (double g = t; count < kBufferRows && g < limit && g < phase_.t_end;
+  for (double g = t; count == 0 || (count < kBufferRows && g < limit && g < phase_.t_end);
        g = grid_time(index_ + count))
     buffer_times_[count++] = g;
-  if (count == 0) buffer_times_[count++] = t;  // t at the phase's own end
   (*law_)(buffer_times_.data(), count, buffer_.data());
   index_ += count;
   buffer_next_ = 1;

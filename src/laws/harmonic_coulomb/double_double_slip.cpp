@@ -30,8 +30,7 @@ using lanes::splat;
 constexpr double kTrigError = 0x1p-76;
 constexpr double kReductionErrorPerStep = 0x1p-94;
 // The ranges of |h| = |w t - w t_a| with bounds of their own.
-constexpr int kRanges = 4;
-constexpr double kRange[kRanges] = {2, 8, 64, 513};
+constexpr double kRange[] = {2, 8, 64, 513};
 
 struct Trig {
   Pair sin, cos;
@@ -52,7 +51,9 @@ inline Lanes gather(const double* table, __m128i index) {
 
 // sin and cos of base pi/128 + y, for |y.hi| <= 2^9 and base in 0..255
 // (error: trig_error with |j| the table steps taken, below 2^15).
-Trig sin_cos(const Pair& y, __m128i base, const DoubleDoubleTrigTable& t) {
+// Inlined into the row loop, as it was measured (docs/benchmarks.md).
+__attribute__((always_inline)) inline Trig sin_cos(const Pair& y, __m128i base,
+                                                   const DoubleDoubleTrigTable& t) {
   const Lanes j = lanes::nearest_integer(y.hi * t.steps_per_radian);
   // d = y - j pi/128: j reduce1 and its difference with y.hi are exact; the
   // rest are terms below |j| 2^-44.
@@ -223,6 +224,7 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
     return lanes::Envelope{
         {{splat(__builtin_fabs(c.hi) + __builtin_fabs(c.lo)), splat(0)}, splat(c.error)}};
   };
+  static_assert(sizeof kRange / sizeof kRange[0] == kRanges && kRanges == 4, "a range per lane");
   const Lanes h_max{kRange[0], kRange[1], kRange[2], kRange[3]};
   const Lanes tau_max = splat(__builtin_fabs(a_hi_)) + h_max + 1;
   const lanes::Envelope tau{exact(tau_max)};
@@ -264,8 +266,8 @@ void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, doubl
   for (std::size_t i = 0; i < n; i += 4) {
     // A short last group repeats its last time in the unused lanes.
     const std::size_t used = n - i < 4 ? n - i : 4;
-    const Lanes time{t[i], t[i + (used > 1 ? 1 : 0)], t[i + (used > 2 ? 2 : used - 1)],
-                     t[i + used - 1]};
+    Lanes time;
+    for (std::size_t k = 0; k < 4; ++k) time[k] = t[i + (k < used ? k : used - 1)];
     const Pair tau = lanes::two_prod(omega, time);  // w t exactly
     const Pair y = tau - base_angle;
     const Mask in_range = magnitude(y.hi) <= splat(kLargestAngle);
@@ -276,14 +278,12 @@ void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, doubl
     const Pair position =
         position_at(x0, w_over_omega, half_sr_over_omega, b_over_omega, h, trig.sin);
     // The bounds of the smallest range holding |h| (|h| <= |h.hi| (1 + 2^-50)).
-    Mask in[kRanges - 1];
-    for (int k = 0; k < kRanges - 1; ++k)
-      in[k] = magnitude(h.hi) <= splat(kRange[k] * (1 - 0x1p-50));
+    Mask in[kRanges];
+    for (int k = 0; k < kRanges; ++k) in[k] = magnitude(h.hi) <= splat(kRange[k] * (1 - 0x1p-50));
     const auto pick = [&](const double* bound) {
-      return in[0]   ? splat(bound[0])
-             : in[1] ? splat(bound[1])
-             : in[2] ? splat(bound[2])
-                     : splat(bound[3]);
+      Lanes chosen = splat(bound[kRanges - 1]);
+      for (int k = kRanges - 2; k >= 0; --k) chosen = in[k] ? splat(bound[k]) : chosen;
+      return chosen;
     };
     const Lanes velocity_error = pick(velocity_error_);
     const Lanes acceleration_error = pick(acceleration_error_);

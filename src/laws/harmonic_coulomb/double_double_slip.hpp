@@ -63,8 +63,10 @@ class DoubleDoubleSlip {
   // The largest |w t - j_a pi/128| a lane accepts (the reduction's range).
   static constexpr double kLargestAngle = 512;
   // Bounds on the errors of v, a and x for |h| up to 2, 8, 64 and 513 rad
-  // (every accepted time has |h| <= 513).
-  double velocity_error_[4] = {}, acceleration_error_[4] = {}, position_error_[4] = {};
+  // (every accepted time has |h| <= 513): one range per lane.
+  static constexpr int kRanges = 4;
+  double velocity_error_[kRanges] = {}, acceleration_error_[kRanges] = {},
+         position_error_[kRanges] = {};
 };
 
 }  // namespace frictionref::detail
