@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "comparison/exact_motion.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/sampling.hpp"
 #include "laws/harmonic_coulomb/double_double_slip.hpp"
@@ -207,8 +208,8 @@ TEST(DenseFastPath, SameRowsAsTheLongDoublePathOnRandomModels) {
   RecordProperty("differing_fast_correctly_rounded", std::to_string(fast_closer));
 }
 
-// The sampler's and sample_at's batches give the rows of one evaluation per
-// time.
+// The sampler's, sample_at's and compare's batches give the rows of one
+// evaluation per time.
 TEST(DenseFastPath, SamplerRowsAreThoseOfSingleEvaluations) {
   testing::ModelStream stream(5);
   for (int i = 0; i < 300; ++i) {
@@ -248,6 +249,12 @@ TEST(DenseFastPath, SamplerRowsAreThoseOfSingleEvaluations) {
     ASSERT_EQ(again.size(), expected.size());
     for (std::size_t k = 0; k < again.size(); ++k)
       ASSERT_TRUE(same(again[k], expected[k])) << testing::describe(r) << " time " << k;
+    // So does compare's exact side.
+    if (times.empty()) continue;
+    const std::vector<State> exact = comparison::exact_motion(r.model, times).states;
+    ASSERT_EQ(exact.size(), expected.size());
+    for (std::size_t k = 0; k < exact.size(); ++k)
+      ASSERT_TRUE(same(exact[k], expected[k])) << testing::describe(r) << " time " << k;
   }
 }
 
