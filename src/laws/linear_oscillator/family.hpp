@@ -37,7 +37,10 @@
 
 namespace frictionref::detail {
 
-template <class Real>
+// kSkipInsideSegments: a stick on a record skips the segments a test in
+// double proves well inside the band (stick_band); false only for the test
+// that compares the phase tables of both ways (test_general_record_skip.cpp).
+template <class Real, bool kSkipInsideSegments = true>
 class LinearOscillatorFamily {
  public:
   using Work = work_t<Real>;
@@ -73,7 +76,7 @@ class LinearOscillatorFamily {
     check_motion_scales<Real, Work>(model);
     check_static_deflection<Real, Work>(model);
     check_time_scales<Real, Work>(model, t_end);
-    check_record_resolution(model);
+    shortest_segment_ = check_record_resolution(model);
     (void)tau0;
   }
 
@@ -107,6 +110,19 @@ class LinearOscillatorFamily {
     Work n = 0, e_n = 0;
     Work excess = 0, e_excess = 0;  // |N| - Rs
   };
+  // A stick's band for the test in double on a record's samples
+  // (RecordForcing::strictly_inside), in units of w n: a segment that passes
+  // it has |n| < rs on all of it by more than twice the at-rest rule's
+  // tolerance (the move of n within the time resolution, n's rounding) and
+  // than the harmonics' whole amplitude, so that neither the at-rest rule at
+  // its start nor the search on it can find anything: it is skipped.
+  struct StickBand {
+    double offset = 0;      // w (f0 - rho^2 y)
+    double band = 0;        // w rs, rounded towards 0
+    double extra = 0;       // the harmonics, their move, 2^-39 of the offset's terms
+    double per_change = 0;  // the record's move within the resolution, per |a_k - a_{k-1}|
+  };
+  StickBand stick_band(const Work& y, const Work& tau) const;
   // One-way, a decision to slide backwards is one to stay.
   AtRest at_rest(const Work& tau, const Work& y, const ForceAtStop* at_stop = nullptr) const {
     const AtRest decision = at_rest_two_way(tau, y, at_stop);
@@ -154,12 +170,15 @@ class LinearOscillatorFamily {
   // 2e-70 s, a velocity change of 1e178 that a stop's root, resolved to the
   // resolution, straddled: found by fuzzing). The rigid block's quadratic
   // roots take such intervals in their stride and are not concerned.
-  static void check_record_resolution(const BasicModel<Real>& model) {
-    if (!model.ground_motion) return;
+  // Returns the shortest interval (for stick_band).
+  static Work check_record_resolution(const BasicModel<Real>& model) {
+    if (!model.ground_motion) return 0;
     const std::vector<double>& t = model.ground_motion->t;
     const Work omega(model.omega);
+    Work shortest = std::numeric_limits<Work>::infinity();
     for (std::size_t i = 0; i + 1 < t.size(); ++i) {
       const Work a = omega * Work(t[i]), b = omega * Work(t[i + 1]);
+      if (b - a < shortest) shortest = b - a;
       const Work resolution = Traits::time_resolution(b);
       if (!(b - a > resolution))
         throw InvalidInput("ground_motion", model.ground_motion->file,
@@ -171,6 +190,7 @@ class LinearOscillatorFamily {
                                "force the motion between them cannot be resolved; resample the "
                                "record (docs/theory.md 9.6)");
     }
+    return shortest;
   }
 
   // The event search's step cap for (from, to]: a fixed allowance plus 256
@@ -207,11 +227,12 @@ class LinearOscillatorFamily {
   DurationGuess<Work> slip_guess_, stick_guess_;
   int last_stop_sign_ = 0;
   Work stick_start_ = 0;
+  Work shortest_segment_ = 0;  // the record's shortest sample interval in tau (none: 0)
 };
 
-template <class Real>
-auto LinearOscillatorFamily<Real>::at_rest_two_way(const Work& tau, const Work& y,
-                                                   const ForceAtStop* at_stop) const -> AtRest {
+template <class Real, bool kSkipInsideSegments>
+auto LinearOscillatorFamily<Real, kSkipInsideSegments>::at_rest_two_way(
+    const Work& tau, const Work& y, const ForceAtStop* at_stop) const -> AtRest {
   using std::fabs;
   // A stop whose own N (from the slip) lies outside the band, or inside it,
   // by more than its rounding and than any move of N within the time
@@ -277,11 +298,14 @@ auto LinearOscillatorFamily<Real>::at_rest_two_way(const Work& tau, const Work& 
   return {0, false};
 }
 
-template <class Real>
+template <class Real, bool kSkipInsideSegments>
 template <class JetAt, class F, class DF>
-auto LinearOscillatorFamily<Real>::root_in(const ZeroBracket<Work>& bracket, const JetAt& jet_at,
-                                           const Work& third, const F& f, const DF& df,
-                                           const std::optional<Work>& guess) -> Work {
+auto LinearOscillatorFamily<Real, kSkipInsideSegments>::root_in(const ZeroBracket<Work>& bracket,
+                                                                const JetAt& jet_at,
+                                                                const Work& third, const F& f,
+                                                                const DF& df,
+                                                                const std::optional<Work>& guess)
+    -> Work {
   // A bracket closed by a sign test at the resolution may end where f is
   // within rounding of zero but positive: the zero is there.
   if (bracket.at_hi.f > 0) return bracket.hi;
@@ -297,9 +321,33 @@ auto LinearOscillatorFamily<Real>::root_in(const ZeroBracket<Work>& bracket, con
       .root;
 }
 
-template <class Real>
-Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real>::stick_end(
-    const Work& tau, const Work& x) {
+template <class Real, bool kSkipInsideSegments>
+auto LinearOscillatorFamily<Real, kSkipInsideSegments>::stick_band(const Work& y,
+                                                                   const Work& tau) const
+    -> StickBand {
+  using std::fabs;
+  const Work w = o_.omega();
+  const Forcing<Work>& f = o_.forcing();
+  const Work horizon = fabs(tau) > fabs(tau_end_) ? fabs(tau) : fabs(tau_end_);
+  const Work res = Traits::time_resolution(horizon);  // >= the resolution anywhere on the stick
+  // Twice over: the harmonics' values with their phases' rounding (at most
+  // 1e-9 of them at |w t| <= 1e10), their move within res, and, for the
+  // rounding of n and of this test, 2^-39 of the terms (n's own is 2^-57).
+  const Work terms = fabs(f.constant()) + o_.rho2() * fabs(y) + o_.rs();
+  const Work extra = w * (terms * Work(0x1p-39) + 2 * f.bound(0) +
+                          2 * (f.bound(1) * res + f.bound(2) * res * res));
+  StickBand b;
+  b.offset = static_cast<double>(w * (f.constant() - o_.rho2() * y));
+  b.band = NetAcceleration<Work>::band_in_double(w * o_.rs());
+  b.extra = static_cast<double>(extra) * (1 + 0x1p-30);
+  // The record moves n by |a_k - a_{k-1}| res / (w dtau) within res (twice).
+  b.per_change = static_cast<double>(2 * res / shortest_segment_) * (1 + 0x1p-30);
+  return b;
+}
+
+template <class Real, bool kSkipInsideSegments>
+Breakaway<typename LinearOscillatorFamily<Real, kSkipInsideSegments>::Work>
+LinearOscillatorFamily<Real, kSkipInsideSegments>::stick_end(const Work& tau, const Work& x) {
   const Work y = o_.omega() * x;
   const RecordForcing<Work>& record = o_.record();
   Breakaway<Work> result;
@@ -308,9 +356,29 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
     // n is constant: the at-rest rule already decided; it holds for ever.
     return result;
   }
-  // Segment by segment of the record (one piece without a record).
-  for (Work from = tau;;) {
-    const RecordPiece<Work> piece = record.piece_at(from);
+  // Segment by segment of the record (one piece without a record). The
+  // interior segments that begin after tau and end before the horizon are
+  // skipped where a test in double on their samples proves them well inside
+  // the band (stick_band): most of a stick's segments.
+  std::size_t k = 0, last = 0;
+  StickBand band;
+  if (record.present()) {
+    k = record.segment_at(tau);
+    last = std::min(record.first_ending_at_or_after(tau_end_), record.samples());
+    band = stick_band(y, tau);
+  }
+  for (Work from = tau;; ++k) {
+    if (kSkipInsideSegments && from > tau && k < last &&
+        record.strictly_inside(k, band.offset, band.band, band.extra, band.per_change, one_way_)) {
+      const std::size_t skipped_from = k;
+      while (k + 1 < last && record.strictly_inside(k + 1, band.offset, band.band, band.extra,
+                                                    band.per_change, one_way_))
+        ++k;
+      summary_->sign_tests += k + 1 - skipped_from;
+      from = record.segment_end(k);
+      continue;
+    }
+    const RecordPiece<Work> piece = record.present() ? record.piece(k) : RecordPiece<Work>{};
     if (from > tau) {
       // A new segment: n turns there, or jumps (at the record's ends); the
       // at-rest rule decides at its start as at any other instant.
@@ -330,9 +398,10 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   }
 }
 
-template <class Real>
-Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real>::stick_end_on(
-    const NetForce<Work>& net, const Work& tau, const Work& to) {
+template <class Real, bool kSkipInsideSegments>
+Breakaway<typename LinearOscillatorFamily<Real, kSkipInsideSegments>::Work>
+LinearOscillatorFamily<Real, kSkipInsideSegments>::stick_end_on(const NetForce<Work>& net,
+                                                                const Work& tau, const Work& to) {
   using std::fabs;
   Breakaway<Work> result;
   // The search runs on f + E, E a bound of f's rounding error over the stick:
@@ -399,9 +468,9 @@ Breakaway<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Re
   return result;
 }
 
-template <class Real>
-SlipEnd<typename LinearOscillatorFamily<Real>::Work> LinearOscillatorFamily<Real>::slip_end(
-    const PhaseStart<Work>& start) {
+template <class Real, bool kSkipInsideSegments>
+SlipEnd<typename LinearOscillatorFamily<Real, kSkipInsideSegments>::Work>
+LinearOscillatorFamily<Real, kSkipInsideSegments>::slip_end(const PhaseStart<Work>& start) {
   using std::fabs;
   using std::sqrt;
   const Work omega = o_.omega();

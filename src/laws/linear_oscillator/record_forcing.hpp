@@ -63,7 +63,27 @@ class RecordForcing {
   // The segment that holds tau (the right one at a sample time).
   RecordPiece<Work> piece_at(const Work& tau) const {
     if (!net_) return {};
-    const auto s = net_->segment(net_->segment_at(tau));
+    return piece(net_->segment_at(tau));
+  }
+
+  // Segments by number (a record present; net_acceleration.hpp), for a
+  // stick's walk: the number of the one that holds tau, of the first
+  // interior one that ends at or after tau (samples() if none), the segment
+  // itself, and the test in double that skips one well inside a band.
+  std::size_t segment_at(const Work& tau) const { return net_->segment_at(tau); }
+  std::size_t first_ending_at_or_after(const Work& tau) const {
+    return net_->first_ending_at_or_after(tau);
+  }
+  std::size_t samples() const { return net_->samples(); }
+  Work segment_end(std::size_t k) const { return net_->segment_end(k); }
+  // w r = -a_g on segment k, shifted by `offset`, strictly inside the band
+  // (NetAcceleration::strictly_inside: both samples by the slack).
+  bool strictly_inside(std::size_t k, double offset, double band, double extra, double per_change,
+                       bool below_only) const {
+    return net_->strictly_inside(k, offset, band, extra, per_change, below_only);
+  }
+  RecordPiece<Work> piece(std::size_t k) const {
+    const auto s = net_->segment(k);
     RecordPiece<Work> piece;
     piece.begin = s.begin;
     piece.end = s.end;

@@ -90,10 +90,19 @@ class NetAcceleration {
   // rounding (a few 2^-53 of the same magnitudes), so that a segment passed
   // here also passes the test in the work type with slack 2^-40.
   bool strictly_inside(std::size_t k, double band, bool below_only) const {
+    return strictly_inside(k, offset_double_, band, 0, 0, below_only);
+  }
+  // The same test for offset - a_g in place of g (a general model's stick:
+  // the offset then holds the spring's force), with a further allowance
+  // `extra + |a_k - a_{k-1}| * per_change` (the caller's own tolerances: the
+  // move of its force within its time resolution, its other terms).
+  bool strictly_inside(std::size_t k, double offset, double band, double extra, double per_change,
+                       bool below_only) const {
     using std::fabs;
     const double a0 = a_[k - 1], a1 = a_[k];
-    const double g0 = offset_double_ - a0, g1 = offset_double_ - a1;
-    const double slack = (fabs(a0) + fabs(a1) + fabs(offset_double_)) * 0x1p-39;
+    const double g0 = offset - a0, g1 = offset - a1;
+    const double slack =
+        (fabs(a0) + fabs(a1) + fabs(offset)) * 0x1p-39 + extra + fabs(a1 - a0) * per_change;
     if (below_only) return g0 + slack < band && g1 + slack < band;
     return fabs(g0) + slack < band && fabs(g1) + slack < band;
   }
@@ -119,6 +128,10 @@ class NetAcceleration {
     return low;
   }
   std::size_t samples() const { return n_; }
+  // The end of segment k (+infinity for the last).
+  Work segment_end(std::size_t k) const {
+    return k < n_ ? tau_at(k) : std::numeric_limits<Work>::infinity();
+  }
 
   // g at tau on segment s (tau in [s.begin, s.end]; the left limit at s.end).
   static Work value(const Segment& s, const Work& tau) {
