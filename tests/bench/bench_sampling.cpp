@@ -1,5 +1,6 @@
 // Dense samples per second as `frictionref curve` takes them (UniformSampler:
-// grid rows plus event rows), in std::cos calls per sample; and the seed's
+// grid rows plus event rows), in std::cos calls per sample, for the seed's
+// model and the general model's cases; and the seed's
 // dense formula alone on its fast path and on its long double path, in the
 // same run (docs/benchmarks.md, "Dense samples in double-double").
 #include <benchmark/benchmark.h>
@@ -11,6 +12,7 @@
 #include "cos_baseline.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/sampling.hpp"
+#include "general_models.hpp"
 #include "laws/harmonic_coulomb/phase_formula.hpp"
 
 namespace frictionref::bench {
@@ -64,12 +66,11 @@ double fallback_share(const Model& model, const GridOptions& grid) {
   return slip_rows ? static_cast<double>(fallbacks) / static_cast<double>(slip_rows) : 0;
 }
 
-void BM_DenseSamples(benchmark::State& state) {
-  const Model model = dense_model(state.range(0));
-  const GridOptions grid = dense_grid();
+// Every row of the sampler on the dense grid, as often as the benchmark asks.
+void sample_all(benchmark::State& state, const Model& model) {
   std::uint64_t samples = 0;
   for (auto _ : state) {
-    UniformSampler sampler(model, grid);
+    UniformSampler sampler(model, dense_grid());
     State row;
     while (sampler.next(row)) {
       benchmark::DoNotOptimize(row);
@@ -78,9 +79,20 @@ void BM_DenseSamples(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(samples));
   state.counters["cos_calls_per_sample"] = cos_calls_per(samples);
-  state.counters["fallback_share"] = fallback_share(model, grid);
+}
+
+void BM_DenseSamples(benchmark::State& state) {
+  const Model model = dense_model(state.range(0));
+  sample_all(state, model);
+  state.counters["fallback_share"] = fallback_share(model, dense_grid());
 }
 BENCHMARK(BM_DenseSamples)->Arg(30)->Arg(70)->Unit(benchmark::kMillisecond);
+
+// The general model's cases (general_models.hpp) on the same grid.
+void BM_GeneralDenseSamples(benchmark::State& state) {
+  sample_all(state, general_model(state.range(0)));
+}
+BENCHMARK(BM_GeneralDenseSamples)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 // The formula alone over the same rows: /L/1 the fast path with its fallback
 // (at_many, as the sampler calls it), /L/0 the long double path for every

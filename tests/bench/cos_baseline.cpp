@@ -51,8 +51,7 @@ void BM_StdCos(benchmark::State& state) {
   for (auto _ : state)
     for (double a : arguments) benchmark::DoNotOptimize(std::cos(a));
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(arguments.size()));
-  state.counters["cos_calls_per_item"] =
-      cos_calls_per(state.iterations() * arguments.size());
+  state.counters["cos_calls_per_item"] = cos_calls_per(state.iterations() * arguments.size());
 }
 BENCHMARK(BM_StdCos);
 

@@ -3,6 +3,10 @@
 # against a std::cos call measured in the same process), peak memory of the
 # streaming commands, and the timing of the 10^5-lambda sweep.
 #   bash tests/bench/run.sh            (from the repository root; ~2 minutes)
+# With BEFORE=<an older build's frictionref_benchmarks> (and BEFORE_LABEL, its
+# commit), the engine's benchmarks also run alternately with that binary
+# (before, after, after, before; 3 repetitions each) and the page gets the
+# before/after ratios of this run (~4 more minutes).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -26,6 +30,20 @@ bin=build/release/frictionref
 build/release/tests/bench/frictionref_benchmarks --benchmark_repetitions=5 \
   --benchmark_report_aggregates_only=true --benchmark_format=json \
   --benchmark_out="$work/bench.json" --benchmark_out_format=json > /dev/null
+
+# Before/after: the same benchmarks of both binaries, alternating.
+compared='BM_Events|BM_DenseSamples|BM_GeneralEvents|BM_GeneralDenseSamples|BM_GeneralRecordSamples|BM_RecordSamples'
+if [[ -n ${BEFORE:-} ]]; then
+  n=0
+  for side in before after after before; do
+    binary=build/release/tests/bench/frictionref_benchmarks
+    [[ $side == before ]] && binary=$BEFORE
+    n=$((n + 1))
+    "$binary" --benchmark_filter="$compared" --benchmark_repetitions=3 \
+      --benchmark_report_aggregates_only=true --benchmark_format=json \
+      --benchmark_out="$work/compare-$n-$side.json" --benchmark_out_format=json > /dev/null
+  done
+fi
 
 # Peak memory (maximum resident set) of the streaming commands.
 peak() {  # peak KiB and wall seconds of a command
@@ -51,10 +69,11 @@ else
 fi
 
 python3 - "$work/bench.json" "$events_kib" "$events_s" "$curve_kib" "$curve_s" "$curve_rows" \
-  "$curve_bytes" "$small_kib" "$sweep_kib" "$sweep_s" > "$work/benchmarks.md" <<'PY'
-import json, sys, datetime, platform, subprocess
+  "$curve_bytes" "$small_kib" "$sweep_kib" "$sweep_s" "$work" "${BEFORE_LABEL:-an older build}" \
+  > "$work/benchmarks.md" <<'PY'
+import glob, json, os, statistics, sys, datetime, platform, subprocess
 (bench, events_kib, events_s, curve_kib, curve_s, curve_rows, curve_bytes, small_kib,
- sweep_kib, sweep_s) = sys.argv[1:]
+ sweep_kib, sweep_s, work, before_label) = sys.argv[1:]
 data = json.load(open(bench))
 ctx = data["context"]
 cos_ns = float(ctx["cos_call_ns"])
@@ -73,6 +92,7 @@ targets = {"BM_Events": ("event", 5), "BM_DenseSamples": ("sample", 1),
            "BM_RecordSamples": ("record sample", 2), "BM_NewmarkSamples": ("record sample", None),
            "BM_SlammerSamples": ("record sample", None),
            "BM_GeneralRecordSamples": ("record sample", None),
+           "BM_GeneralDenseSamples": ("sample", None),
            "BM_DenseFormula": ("row", None)}
 batch = [b for b in rows if b["run_name"].startswith("BM_NewmarkBatch")]
 rows = [b for b in rows if not b["run_name"].startswith("BM_NewmarkBatch")]
@@ -120,6 +140,30 @@ for b in rows:
                    f"; {units / units_of[seed]:.1f}x")
     print(f"| {label} | per {what} | {b['items_per_second']:.4g} | {per_item_ns:.1f} | {units:.2f} | {verdict} |")
 print()
+# Issue 11: the general models and the record path within 2x of their seed
+# counterparts, in this run.
+counterparts = [
+    ("BM_GeneralEvents/0", "BM_Events/70", "event"),
+    ("BM_GeneralEvents/1", "BM_Events/30", "event"),
+    ("BM_GeneralEvents/2", "BM_Events/30", "event"),
+    ("BM_GeneralDenseSamples/0", "BM_DenseSamples/70", "dense sample"),
+    ("BM_GeneralDenseSamples/1", "BM_DenseSamples/30", "dense sample"),
+    ("BM_GeneralDenseSamples/2", "BM_DenseSamples/30", "dense sample"),
+    ("BM_GeneralRecordSamples", "BM_RecordSamples/one_way:0", "record sample"),
+    ("BM_RecordSamples/one_way:1", "BM_DenseSamples/30", "record sample against a dense sample"),
+    ("BM_RecordSamples/one_way:0", "BM_DenseSamples/30", "record sample against a dense sample"),
+]
+pairs = [(a, b, what) for a, b, what in counterparts if a in units_of and b in units_of]
+if pairs:
+    print("Issue 11's targets for the general models and the record path: at most 2x the cost of")
+    print("the seed's counterpart in the same run (cos calls per item):\n")
+    print("| benchmark | per | cost | seed's counterpart | its cost | ratio | <= 2x |")
+    print("|---|---|---:|---|---:|---:|---|")
+    for a, b, what in pairs:
+        ratio = units_of[a] / units_of[b]
+        print(f"| {a} | {what} | {units_of[a]:.2f} | {b} | {units_of[b]:.2f} | {ratio:.1f}x | "
+              f"{'met' if ratio <= 2 else 'missed'} |")
+    print()
 dense = [b for b in rows if b["run_name"].startswith("BM_DenseSamples/")]
 if dense:
     print("Slip rows the dense fast path leaves to long double (`fallback_share`): " +
@@ -138,6 +182,30 @@ if batch:
     ms = b["real_time"] if b.get("time_unit") == "ms" else b["real_time"] / 1e6
     print("Record batch (`BM_NewmarkBatch`): 100 synthetic records x 20 yield accelerations x 2")
     print(f"polarities of 10^4 samples each, exact, one-way, 2 threads: {ms / 1e3:.3f} s wall (median).\n")
+compare = sorted(glob.glob(os.path.join(work, "compare-*.json")))
+if compare:
+    runs = {"before": {}, "after": {}}
+    for path in compare:
+        side = "before" if path.endswith("-before.json") else "after"
+        d = json.load(open(path))
+        cos = float(d["context"]["cos_call_ns"])
+        for b in d["benchmarks"]:
+            if b.get("aggregate_name") == "median":
+                runs[side].setdefault(b["run_name"], []).append(1e9 / b["items_per_second"] / cos)
+    print(f"### Before and after, in this run\n")
+    print(f"The benchmark binary of {before_label} (before) and of this build (after), run")
+    print("alternately (before, after, after, before; 3 repetitions each, the median of each run),")
+    print("in cos calls per item; the ratio is of the medians of the runs. A benchmark the older")
+    print("build does not have shows n/a.\n")
+    print("| benchmark | before (runs) | after (runs) | after / before |")
+    print("|---|---|---|---:|")
+    for name in sorted(runs["after"]):
+        after = runs["after"][name]
+        before = runs["before"].get(name)
+        fmt = lambda xs: ", ".join(f"{x:.2f}" for x in xs)
+        ratio = (f"{statistics.median(after) / statistics.median(before):.2f}" if before else "n/a")
+        print(f"| {name} | {fmt(before) if before else 'n/a'} | {fmt(after)} | {ratio} |")
+    print()
 print("### Memory of the streaming commands\n")
 print("Peak resident set (`/usr/bin/time -f %M`), lambda = 0.7:\n")
 print("| command | output | peak memory | wall time |")

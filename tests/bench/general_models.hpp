@@ -1,0 +1,39 @@
+// The general model's benchmark cases (docs/benchmarks.md, "The general
+// model"), for its events and its dense samples:
+//   0: the seed's model at lambda 0.7 run through the general laws (static
+//      friction set a rounding above R, so that the general family is used);
+//   1: static 0.6 > sliding 0.4 friction, k = 1, c = 0.1;
+//   2: k = 1, c = 0.05, lambda 0.3, a second harmonic 0.4 sin(2.5 t + 0.3).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "frictionref/model.hpp"
+
+namespace frictionref::bench {
+
+inline Model general_model(std::int64_t which) {
+  Model m;
+  switch (which) {
+    case 0:
+      m.friction = 0.7;
+      m.static_friction = std::nextafter(0.7, 1.0);
+      break;
+    case 1:
+      m.friction = 0.4;
+      m.static_friction = 0.6;
+      m.stiffness = 1;
+      m.damping = 0.1;
+      break;
+    default:
+      m.friction = 0.3;
+      m.stiffness = 1;
+      m.damping = 0.05;
+      m.harmonics.push_back({0.4, 2.5, 0.3});
+      break;
+  }
+  return m;
+}
+
+}  // namespace frictionref::bench
