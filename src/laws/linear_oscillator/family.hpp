@@ -570,6 +570,7 @@ LinearOscillatorFamily<Real, kSkipInsideSegments>::slip_end(const PhaseStart<Wor
   // rounding over the resolution, as the closed form's own do there), and
   // kept: it is the search's first point when the stretch is one resolution.
   Work blind = 0;
+  Work moved_tau = std::numeric_limits<Work>::quiet_NaN();  // where `bounded` holds a moved point
   if (start.v == 0) {
     const Work res = Traits::time_resolution(from);
     Jet<Work> noisy = at_from;
@@ -577,6 +578,7 @@ LinearOscillatorFamily<Real, kSkipInsideSegments>::slip_end(const PhaseStart<Wor
     if (law.can_move(from, next)) {
       const SlipPoint at_start = bounded.point();
       bounded.at(next, [&law, &at_start](const Work& t) { return law.moved(at_start, t); });
+      moved_tau = next;
     }
     const Jet<Work> later = law.jet(bounded_point(next));
     if (later.e0 > noisy.e0) noisy.e0 = later.e0;
@@ -602,7 +604,11 @@ LinearOscillatorFamily<Real, kSkipInsideSegments>::slip_end(const PhaseStart<Wor
     if (!(from < law.segment_end()) && law.segment_end() < tau_end_) {
       // The law's segment of the record is over: the next one's law, from
       // the state there.
-      law = law.continued_at(from);
+      // The state there from the search's last point where it was evaluated
+      // at the segment's end (the same closed form: the same y and v as an
+      // evaluation without bounds), else from a new evaluation.
+      const bool evaluated_there = bounded.tau() == from && !(moved_tau == from);
+      law = evaluated_there ? law.continued_from(bounded.point()) : law.continued_at(from);
       bounded.forget();
       cache.forget();
       at_from = law.jet(bounded_point(from));

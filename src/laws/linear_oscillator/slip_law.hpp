@@ -111,9 +111,11 @@ class LinearSlipLaw {
   // The slip from this law's state at tau (its segment's end) on, under the
   // law of the segment that holds tau: the engine and dense output carry a
   // slip across the record's samples this one way.
-  LinearSlipLaw continued_at(const Work& tau) const {
-    const Point q = point(tau, /*with_bounds=*/false);
-    return LinearSlipLaw(*o_, s_, tau, q.y, q.v);
+  LinearSlipLaw continued_at(const Work& tau) const { return continued_from(point(tau, false)); }
+  // The same from a point of this law at its segment's end already evaluated
+  // (its y and v are those of point(tau, false): the same closed form).
+  LinearSlipLaw continued_from(const Point& q) const {
+    return LinearSlipLaw(*o_, s_, q.tau, q.y, q.v);
   }
 
   // The state and derivatives at tau; with_bounds: also the rounding-error
