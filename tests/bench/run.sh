@@ -188,21 +188,21 @@ if compare:
     for path in compare:
         side = "before" if path.endswith("-before.json") else "after"
         d = json.load(open(path))
-        cos = float(d["context"]["cos_call_ns"])
         for b in d["benchmarks"]:
             if b.get("aggregate_name") == "median":
-                runs[side].setdefault(b["run_name"], []).append(1e9 / b["items_per_second"] / cos)
+                runs[side].setdefault(b["run_name"], []).append(1e9 / b["items_per_second"])
     print(f"### Before and after, in this run\n")
-    print(f"The benchmark binary of {before_label} (before) and of this build (after), run")
-    print("alternately (before, after, after, before; 3 repetitions each, the median of each run),")
-    print("in cos calls per item; the ratio is of the medians of the runs. A benchmark the older")
-    print("build does not have shows n/a.\n")
+    print(f"Before: the benchmark binary of {before_label}. After: this build's. Run alternately")
+    print("(before, after, after, before; 3 repetitions each, the median of each run), in ns")
+    print("per item, from items per second: the ratio needs no unit, and each process's own")
+    print("measurement of a cos call varies by up to 25 % here. The ratio is of the medians of")
+    print("the runs. A benchmark the older build does not have shows n/a.\n")
     print("| benchmark | before (runs) | after (runs) | after / before |")
     print("|---|---|---|---:|")
     for name in sorted(runs["after"]):
         after = runs["after"][name]
         before = runs["before"].get(name)
-        fmt = lambda xs: ", ".join(f"{x:.2f}" for x in xs)
+        fmt = lambda xs: ", ".join(f"{x:.4g}" for x in xs)
         ratio = (f"{statistics.median(after) / statistics.median(before):.2f}" if before else "n/a")
         print(f"| {name} | {fmt(before) if before else 'n/a'} | {fmt(after)} | {ratio} |")
     print()

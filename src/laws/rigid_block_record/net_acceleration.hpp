@@ -101,8 +101,10 @@ class NetAcceleration {
     using std::fabs;
     const double a0 = a_[k - 1], a1 = a_[k];
     const double g0 = offset - a0, g1 = offset - a1;
-    const double slack =
-        (fabs(a0) + fabs(a1) + fabs(offset)) * 0x1p-39 + extra + fabs(a1 - a0) * per_change;
+    double slack = (fabs(a0) + fabs(a1) + fabs(offset)) * 0x1p-39;
+    // (Folded away where the caller passes constant zeros: the rigid block's
+    // stick walks every sample with this test.)
+    if (extra != 0 || per_change != 0) slack += extra + fabs(a1 - a0) * per_change;
     if (below_only) return g0 + slack < band && g1 + slack < band;
     return fabs(g0) + slack < band && fabs(g1) + slack < band;
   }
