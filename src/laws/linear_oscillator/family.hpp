@@ -344,9 +344,9 @@ auto LinearOscillatorFamily<Real, kSkipInsideSegments>::stick_band(const Work& y
   const Forcing<Work>& f = o_.forcing();
   const Work horizon = fabs(tau) > fabs(tau_end_) ? fabs(tau) : fabs(tau_end_);
   const Work res = Traits::time_resolution(horizon);  // >= the resolution anywhere on the stick
-  // Twice over: the harmonics' values with their phases' rounding (at most
-  // 1e-9 of them at |w t| <= 1e10), their move within res, and, for the
-  // rounding of n and of this test, 2^-39 of the terms (n's own is 2^-57).
+  // Twice over: the harmonics' values and their phases' rounding (below
+  // 2^-63 |q tau| of them), their move within res; and, for the rounding of
+  // n and of this test, 2^-39 of the terms (n's own is 2^-57).
   const Work terms = fabs(f.constant()) + o_.rho2() * fabs(y) + o_.rs();
   const Work extra = w * (terms * Work(0x1p-39) + 2 * f.bound(0) +
                           2 * (f.bound(1) * res + f.bound(2) * res * res));
