@@ -381,13 +381,14 @@ LinearOscillatorFamily<Real, kSkipInsideSegments>::stick_end(const Work& tau, co
     last = std::min(record.first_ending_at_or_after(tau_end_), record.samples());
     band = stick_band(y, tau);
   }
+  const auto inside = [&](std::size_t segment) {
+    return record.strictly_inside(segment, band.offset, band.band, band.extra, band.per_change,
+                                  one_way_);
+  };
   for (Work from = tau;; ++k) {
-    if (kSkipInsideSegments && from > tau && k < last &&
-        record.strictly_inside(k, band.offset, band.band, band.extra, band.per_change, one_way_)) {
+    if (kSkipInsideSegments && from > tau && k < last && inside(k)) {
       const std::size_t skipped_from = k;
-      while (k + 1 < last && record.strictly_inside(k + 1, band.offset, band.band, band.extra,
-                                                    band.per_change, one_way_))
-        ++k;
+      while (k + 1 < last && inside(k + 1)) ++k;
       summary_->sign_tests += k + 1 - skipped_from;
       from = record.segment_end(k);
       continue;
