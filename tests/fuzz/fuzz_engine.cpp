@@ -287,17 +287,22 @@ bool finite(const Phase& p) {
 // most at rate |v| (F_max + R)), its fastest rate, and the scale tolerances are
 // taken relative to.
 struct GeneralScales {
-  long double force = 0;        // |F0| + B + sum |B_i| + m max |a_g|
-  long double record_rate = 0;  // m max |a_g'|
-  long double speed = 0;        // >= |v|
-  long double travel = 0;       // >= |x|
-  long double fast = 0;         // max(w, w_i, sqrt(k/m), c/m) [1/time]
+  long double force = 0;         // |F0| + B + sum |B_i| + m max |a_g|
+  long double record_rate = 0;   // m max |a_g'|
+  long double forcing_rate = 0;  // B w + sum |B_i| w_i >= |F'|
+  long double speed = 0;         // >= |v|
+  long double travel = 0;        // >= |x|
+  long double fast = 0;          // max(w, w_i, sqrt(k/m), c/m) [1/time]
 };
 
 GeneralScales general_scales(const Model& m, double t_end) {
   GeneralScales g;
   g.force = std::fabs(static_cast<long double>(m.force_offset)) + m.amplitude;
-  for (const auto& h : m.harmonics) g.force += std::fabs(static_cast<long double>(h.amplitude));
+  g.forcing_rate = static_cast<long double>(m.amplitude) * m.omega;
+  for (const auto& h : m.harmonics) {
+    g.force += std::fabs(static_cast<long double>(h.amplitude));
+    g.forcing_rate += std::fabs(static_cast<long double>(h.amplitude)) * h.omega;
+  }
   if (m.ground_motion) {
     const auto& r = *m.ground_motion;
     for (std::size_t i = 0; i < r.a.size(); ++i) {
@@ -360,15 +365,21 @@ long double force_tolerance(const Model& m, const GeneralScales& g, double t, do
   for (const auto& h : m.harmonics)
     oracle += std::fabs(h.amplitude) * 4 * kEps * std::fabs(h.phase);
   // The record's value at a time rounded to double (and to tau = w t), and
-  // its change within the engine's time resolution 8 eps max(1, |w t|) / w,
-  // inside which an event is placed (at a sample, a breakaway the record's
-  // next interval brings within the resolution is placed at the sample).
-  const long double resolution =
-      16 * std::numeric_limits<double>::epsilon() *
-      std::fmax(1.0L, static_cast<long double>(m.omega) * std::fabs(t)) / m.omega;
+  // the forcing's and the record's change within the engine's time
+  // resolution 8 eps max(1, |w t|) / w, inside which an event is placed (at a
+  // sample, a breakaway the record's next interval brings within the
+  // resolution is placed at the sample; a stick starts where N, moving
+  // inwards, re-enters the band within it). The resolution is the main
+  // forcing's: a harmonic up to 1e10 times faster (docs/theory.md 4.12)
+  // moves N by |B_i| w_i times it, more than the band itself can be (found
+  // by fuzzing: corpus general-finding-fast-harmonic-within-resolution).
+  const long double resolution = 16 * std::numeric_limits<double>::epsilon() *
+                                 std::fmax(1.0L, static_cast<long double>(m.omega) * std::fabs(t)) /
+                                 m.omega;
   const long double record =
       g.record_rate * (64 * kEps * std::fmax(1.0L, std::fabs(t)) + resolution);
-  return 1e-9L * scale + phase * (g.force + std::fabs(m.stiffness * x)) + oracle + record;
+  const long double forcing = g.forcing_rate * resolution;
+  return 1e-9L * scale + phase * (g.force + std::fabs(m.stiffness * x)) + oracle + record + forcing;
 }
 
 long double speed_tolerance(const GeneralScales& g) { return 1e-9L * g.speed; }
