@@ -359,11 +359,14 @@ long double net_force(const Model& m, double t, double x) {
 // oracle's own rounding of w_i t + phi_i in long double (the engine reduces
 // phi_i mod 2 pi exactly; net_force above does not).
 long double force_tolerance(const Model& m, const GeneralScales& g, double t, double x) {
-  const long double scale = g.force + m.static_limit() + std::fabs(m.stiffness * x);
+  // (In long double throughout: |B_i| 4 in double overflowed for |B_i| = 1.2e308
+  // and made the tolerance inf * 0 = NaN; found by fuzzing.)
+  const long double spring = std::fabs(static_cast<long double>(m.stiffness) * x);
+  const long double scale = g.force + m.static_limit() + spring;
   const long double phase = 64 * kEps * std::fmax(1.0L, g.fast * std::fabs(t));
   long double oracle = 0;
   for (const auto& h : m.harmonics)
-    oracle += std::fabs(h.amplitude) * 4 * kEps * std::fabs(h.phase);
+    oracle += std::fabs(static_cast<long double>(h.amplitude)) * 4 * kEps * std::fabs(h.phase);
   // The record's value at a time rounded to double (and to tau = w t), and
   // the forcing's and the record's change within the engine's time
   // resolution 8 eps max(1, |w t|) / w, inside which an event is placed (at a
@@ -379,7 +382,7 @@ long double force_tolerance(const Model& m, const GeneralScales& g, double t, do
   const long double record =
       g.record_rate * (64 * kEps * std::fmax(1.0L, std::fabs(t)) + resolution);
   const long double forcing = g.forcing_rate * resolution;
-  return 1e-9L * scale + phase * (g.force + std::fabs(m.stiffness * x)) + oracle + record + forcing;
+  return 1e-9L * scale + phase * (g.force + spring) + oracle + record + forcing;
 }
 
 long double speed_tolerance(const GeneralScales& g) { return 1e-9L * g.speed; }
