@@ -156,7 +156,7 @@ void double_double_sin_cos(double hi, double lo, double out[5]) {
 
 DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
   if (!(finite(s.omega) && finite(s.amplitude) && finite(s.mass) && finite(s.friction) &&
-        finite(s.t_begin) && finite(s.x_begin) && finite(s.v_begin)))
+        finite(s.force_offset) && finite(s.t_begin) && finite(s.x_begin) && finite(s.v_begin)))
     return;
   if (!(s.omega > 0 && s.mass > 0 && (s.sign == 1 || s.sign == -1))) return;
   // Magnitudes far from under- and overflow, so that the quotients' residuals
@@ -165,7 +165,7 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
     return z == 0 || (__builtin_fabs(z) >= 0x1p-500 && __builtin_fabs(z) <= 0x1p500);
   };
   if (!(moderate(s.omega) && moderate(s.mass) && moderate(s.amplitude) && moderate(s.friction) &&
-        moderate(s.omega * s.mass)))
+        moderate(s.force_offset) && moderate(s.omega * s.mass)))
     return;
   const DoubleDoubleTrigTable& table = double_double_trig_table();
   const Lanes omega = splat(s.omega);
@@ -189,7 +189,10 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
   const Trig start_trig = sin_cos(start_offset.value, _mm_set1_epi32(base_index_), table);
   const Lanes start_error = trig_error(start_offset.error, splat(1));
   const Bounded start_sin{start_trig.sin, start_error}, start_cos{start_trig.cos, start_error};
-  const Bounded sr = s.sign > 0 ? r : -r;
+  // s r - f0: the constant part of the force against the slip (the seed's
+  // bounds untouched where F0 = 0).
+  const Bounded s_r = s.sign > 0 ? r : -r;
+  const Bounded sr = s.force_offset == 0 ? s_r : s_r - quotient(s.force_offset, mass_omega);
   const Bounded moving = exact(splat(s.v_begin)) + b * start_cos;  // v_a + b cos a
   const Bounded b_over_omega = b * inverse_omega;
 

@@ -11,7 +11,9 @@
 //   v = (v_a + b cos a + s r a) - b cos tau - s r tau
 //   a = w b sin tau - w s r
 //   x = (x_a + b sin a / w) + h ((v_a + b cos a) / w - s r / (2 w) h) - b / w sin tau,
-// h = tau - a.
+// h = tau - a. A constant force F0 (the general model without spring, damper,
+// harmonics or record: static friction above R, an offset) enters as
+// s r - f0 in place of s r, f0 = F0 / (m w): the same law.
 #pragma once
 
 #include <cstddef>
@@ -20,10 +22,12 @@
 
 namespace frictionref::detail {
 
+// A slip of m x'' = B sin(w t) + F0 - s R from (t_begin, x_begin, v_begin).
 struct SeedSlipStart {
   double omega, amplitude, mass, friction;
   int sign;  // +1 forward, -1 backward
   double t_begin, x_begin, v_begin;
+  double force_offset = 0;  // F0: 0 in the seed's model
 };
 
 // The fast path's sin and cos of y = hi + lo (|hi| <= 512), each as a

@@ -13,6 +13,7 @@
 #include "engine/phase_formula.hpp"
 #include "engine/scalar_traits.hpp"
 #include "laws/harmonic_coulomb/double_double_slip.hpp"
+#include "laws/harmonic_coulomb/fast_slip_rows.hpp"
 #include "laws/harmonic_coulomb/phase_law.hpp"
 
 namespace frictionref::detail {
@@ -48,18 +49,8 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
       for (std::size_t i = 0; i < n; ++i) out[i] = long_double_at(t[i]);
       return;
     }
-    if constexpr (std::is_same_v<Real, double>) {
-      constexpr std::size_t kChunk = 64;
-      double x[kChunk], v[kChunk], a[kChunk];
-      unsigned char decided[kChunk];
-      for (std::size_t i = 0; i < n; i += kChunk) {
-        const std::size_t m = std::min(kChunk, n - i);
-        fast_->evaluate(t + i, m, x, v, a, decided);
-        for (std::size_t k = 0; k < m; ++k)
-          out[i + k] = decided[k] ? slip_state(phase_, t[i + k], x[k], v[k], a[k])
-                                  : long_double_at(t[i + k]);
-      }
-    }
+    if constexpr (std::is_same_v<Real, double>)
+      fast_slip_rows(*fast_, phase_, t, n, out, [this](double ti) { return long_double_at(ti); });
   }
 
   // The state from the long double law alone (what the fast path must agree
@@ -75,12 +66,7 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
   // The fast path's answer alone, where it decides (tests).
   bool fast_at(const Real& t, BasicState<Real>& state) const {
     if constexpr (std::is_same_v<Real, double>) {
-      if (!fast_) return false;
-      double x, v, a;
-      unsigned char decided;
-      fast_->evaluate(&t, 1, &x, &v, &a, &decided);
-      if (decided) state = slip_state(phase_, t, x, v, a);
-      return decided;
+      return fast_ && fast_slip_row(*fast_, phase_, t, state);
     } else {
       (void)t;
       (void)state;

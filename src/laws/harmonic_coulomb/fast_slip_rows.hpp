@@ -1,0 +1,40 @@
+// A slip's dense rows through the fast path (double_double_slip.hpp), the
+// rows it cannot decide from the long double closed form (Ziv's strategy):
+// the seed's dense output, and the general model's where its slip is the
+// same law (no spring, damper, harmonic or record).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+
+#include "engine/phase_formula.hpp"
+#include "laws/harmonic_coulomb/double_double_slip.hpp"
+
+namespace frictionref::detail {
+
+template <class LongDoubleAt>
+void fast_slip_rows(const DoubleDoubleSlip& fast, const BasicPhase<double>& phase, const double* t,
+                    std::size_t n, BasicState<double>* out, const LongDoubleAt& long_double_at) {
+  constexpr std::size_t kChunk = 64;
+  double x[kChunk], v[kChunk], a[kChunk];
+  unsigned char decided[kChunk];
+  for (std::size_t i = 0; i < n; i += kChunk) {
+    const std::size_t m = std::min(kChunk, n - i);
+    fast.evaluate(t + i, m, x, v, a, decided);
+    for (std::size_t k = 0; k < m; ++k)
+      out[i + k] =
+          decided[k] ? slip_state(phase, t[i + k], x[k], v[k], a[k]) : long_double_at(t[i + k]);
+  }
+}
+
+// The fast path's answer alone at t, where it decides (tests).
+inline bool fast_slip_row(const DoubleDoubleSlip& fast, const BasicPhase<double>& phase, double t,
+                          BasicState<double>& state) {
+  double x, v, a;
+  unsigned char decided;
+  fast.evaluate(&t, 1, &x, &v, &a, &decided);
+  if (decided) state = slip_state(phase, t, x, v, a);
+  return decided;
+}
+
+}  // namespace frictionref::detail
