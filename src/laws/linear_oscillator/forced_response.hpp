@@ -78,6 +78,9 @@ class ForcedResponse {
   // (transition.root_exp(u); only read beyond the series range).
   bool needs_root_exp(const Work& u) const { return u * reach_limit_ > Work(kSeriesLimit); }
 
+  // at<false>: R alone (dense output, the search's plain points), the same
+  // value bit for bit, without R' and the magnitudes.
+  template <bool kBounds = true>
   HarmonicResponseAt<Work> at(const Work& u, const Transition<Work>& t,
                               const Complex<Work>& exp_iqu, const RootExp<Work>& root_exp) const {
     using boost::math::expm1;
@@ -92,14 +95,14 @@ class ForcedResponse {
       for (std::size_t i = n + 1; i-- > 0;) sum = sum * u + series_[i];
       out.r = sum * Work(u * u);
       // sum |r_n| u^n <= u^2 e^x / 2 <= 0.83 u^2.
-      out.mag_r = u * u;
+      if constexpr (kBounds) out.mag_r = u * u;
     } else {
       const Complex<Work>& exp_p1u = root_exp.value;
       const Complex<Work> z = to_p1_ * u;
       const Work abs_z = abs_to_p1_ * u;
       const Work abs_p1u = root_exp.modulus;
       Complex<Work> e;
-      Work mag_e;
+      Work mag_e = 0;
       if (abs_z <= 1) {
         // phi1(z) = expm1(z) / z; Re expm1(x + i y) = expm1(x) cos y - 2 sin^2(y / 2),
         // with 2 sin^2(y / 2) = sin^2 y / (1 + cos y): |y| <= |z| <= 1 keeps
@@ -113,20 +116,24 @@ class ForcedResponse {
         const Complex<Work> em1{em1_re * sc.cos - versine, (1 + em1_re) * sc.sin};
         const Complex<Work> phi1 = abs_z > 0 ? em1 / z : Complex<Work>{1, 0};
         e = exp_p1u * phi1 * u;
-        // |phi1| only sizes the error bound, and |z| <= 1 keeps it near 1:
-        // no overflow for hypot to guard against.
-        const Work abs_phi1 = sqrt(phi1.re * phi1.re + phi1.im * phi1.im);
-        // e^{p1 u}'s arguments are rounded by up to their size in ulps.
-        mag_e =
-            abs_p1u * u * (abs_phi1 > 1 ? abs_phi1 : Work(1)) * (1 + fabs(p1_.im) * u - p1_.re * u);
+        if constexpr (kBounds) {
+          // |phi1| only sizes the error bound, and |z| <= 1 keeps it near 1:
+          // no overflow for hypot to guard against.
+          const Work abs_phi1 = sqrt(phi1.re * phi1.re + phi1.im * phi1.im);
+          // e^{p1 u}'s arguments are rounded by up to their size in ulps.
+          mag_e = abs_p1u * u * (abs_phi1 > 1 ? abs_phi1 : Work(1)) *
+                  (1 + fabs(p1_.im) * u - p1_.re * u);
+        }
       } else {
         e = (exp_iqu - exp_p1u) / to_p1_;
         // The arguments q u and Im(p1) u are rounded by up to their size in ulps.
-        mag_e = (1 + q_ * u + abs_p1u * (1 + fabs(p1_.im) * u - p1_.re * u)) / abs_to_p1_;
+        if constexpr (kBounds)
+          mag_e = (1 + q_ * u + abs_p1u * (1 + fabs(p1_.im) * u - p1_.re * u)) / abs_to_p1_;
       }
       out.r = (e - Complex<Work>{t.g, 0}) / to_p2_;
-      out.mag_r = (mag_e + t.mag_g) / abs_to_p2_;
+      if constexpr (kBounds) out.mag_r = (mag_e + t.mag_g) / abs_to_p2_;
     }
+    if constexpr (!kBounds) return out;
     out.dr = Complex<Work>{0, q_} * out.r + Complex<Work>{t.g, 0};
     out.mag_dr = q_ * out.mag_r + t.mag_g;
     return out;

@@ -118,8 +118,10 @@ class LinearSlipLaw {
     return LinearSlipLaw(*o_, s_, q.tau, q.y, q.v);
   }
 
-  // The state and derivatives at tau; with_bounds: also the rounding-error
-  // bounds and the tail, which only the event search needs.
+  // The state and derivatives at tau; with_bounds: also v''', the
+  // rounding-error bounds and the tail, which only the event search needs
+  // (without: y, v, v' and v'', the same values bit for bit; the root
+  // polish reads v'' of plain points).
   Point point(const Work& tau, bool with_bounds = true) const {
     return with_bounds ? evaluate<true>(tau) : evaluate<false>(tau);
   }
@@ -189,7 +191,7 @@ class LinearSlipLaw {
     const Work eps = std::numeric_limits<Work>::epsilon();
     const Work rho2 = o_->rho2();
     const Work u = tau - tau_a_;
-    const Transition<Work> t = o_->transition().at(u);
+    const Transition<Work> t = o_->transition().template at<kBounds>(u);
     const auto& forcing = o_->forcing().terms();
     const auto& responses = o_->responses();
     RootExp<Work> root_exp;
@@ -221,7 +223,7 @@ class LinearSlipLaw {
         root_exp = o_->transition().root_exp(u, t);
         have_root_exp = true;
       }
-      const HarmonicResponseAt<Work> h = response.at(u, t, e, root_exp);
+      const HarmonicResponseAt<Work> h = response.template at<kBounds>(u, t, e, root_exp);
       // From R, not from the ODE of R: heavily damped, -2 sigma R' would
       // cancel e^{i q u} to rounding noise of the fast root's size.
       const Complex<Work> iq{0, q};

@@ -25,7 +25,9 @@
 //     phi1(z) = expm1(z)/z.
 //
 // Each value comes with the magnitude its rounding error is a few ulps of
-// (`mag_*`), for the certified event search.
+// (`mag_*`), for the certified event search; at<false> leaves the
+// magnitudes and G'''' out (dense output and the search's plain points read
+// neither), its values those of at<true> bit for bit.
 #pragma once
 
 #include <boost/math/special_functions/expm1.hpp>
@@ -139,19 +141,21 @@ class TransitionFunctions {
   }
 
   // At u = tau - tau_a >= 0.
+  template <bool kBounds = true>
   Transition<Work> at(const Work& u) const {
     if (u == 0) {  // G = 0, G' = 1 and the higher derivatives from the ODE
       Transition<Work> t;
-      higher_by_ode(t);
+      higher_by_ode<kBounds>(t);
       return t;
     }
-    if (u * rate_ <= kSeriesLimit) return series(u);
-    return underdamped_ ? underdamped(u) : overdamped(u);
+    if (u * rate_ <= kSeriesLimit) return series<kBounds>(u);
+    return underdamped_ ? underdamped<kBounds>(u) : overdamped<kBounds>(u);
   }
 
  private:
   static constexpr double kSeriesLimit = 0.5;
 
+  template <bool kBounds>
   Transition<Work> series(const Work& u) const {
     using std::fabs;
     Transition<Work> t;
@@ -183,17 +187,20 @@ class TransitionFunctions {
     t.g1 = g1 * u * u;
     t.ramp = ramp * u * u * u;
     t.phi11 = t.dg + 2 * sigma_ * t.g;
-    // |c_n| <= rate^(n-1) / (n-1)! bounds the sums of |terms| with u rate <= 1
-    // by e u, 2 e, e u^2 / 2 and e u^3 / 6.
-    t.mag_g = 3 * u;
-    t.mag_dg = 6;
-    t.mag_phi11 = 6 + 6 * sigma_ * u;
-    t.mag_g1 = 3 * u * u / 2;
-    t.mag_ramp = u * u * u / 2;
-    higher_by_ode(t);
+    if constexpr (kBounds) {
+      // |c_n| <= rate^(n-1) / (n-1)! bounds the sums of |terms| with u rate <= 1
+      // by e u, 2 e, e u^2 / 2 and e u^3 / 6.
+      t.mag_g = 3 * u;
+      t.mag_dg = 6;
+      t.mag_phi11 = 6 + 6 * sigma_ * u;
+      t.mag_g1 = 3 * u * u / 2;
+      t.mag_ramp = u * u * u / 2;
+    }
+    higher_by_ode<kBounds>(t);
     return t;
   }
 
+  template <bool kBounds>
   Transition<Work> underdamped(const Work& u) const {
     using std::exp;
     using std::fabs;
@@ -205,33 +212,38 @@ class TransitionFunctions {
     t.dg = e * (sc.cos - sigma_ * s);
     t.phi11 = e * (sc.cos + sigma_ * s);
     t.g1 = (1 - t.phi11) / rho2_;
-    // The arguments sigma u and nu u are rounded by up to their size in ulps:
-    // exp and sin(nu u) / nu move by sigma u |value| and u.
-    const Work arg = sigma_ * u + nu_ * u;
-    t.mag_g = (fabs(t.g) + e * fabs(s)) * (1 + sigma_ * u) + e * u;
-    t.mag_dg = e * (fabs(sc.cos) + sigma_ * fabs(s)) * (1 + arg) + e * sigma_ * u;
-    t.mag_phi11 = t.mag_dg;
-    t.mag_g1 = (1 + t.mag_phi11) / rho2_;
-    ramp_from_g1(u, t);
+    if constexpr (kBounds) {
+      // The arguments sigma u and nu u are rounded by up to their size in ulps:
+      // exp and sin(nu u) / nu move by sigma u |value| and u.
+      const Work arg = sigma_ * u + nu_ * u;
+      t.mag_g = (fabs(t.g) + e * fabs(s)) * (1 + sigma_ * u) + e * u;
+      t.mag_dg = e * (fabs(sc.cos) + sigma_ * fabs(s)) * (1 + arg) + e * sigma_ * u;
+      t.mag_phi11 = t.mag_dg;
+      t.mag_g1 = (1 + t.mag_phi11) / rho2_;
+    }
+    ramp_from_g1<kBounds>(u, t);
     t.has_root_exp = true;
     t.root_decay = e;
     t.root_cos = sc.cos;
     t.root_sin = sc.sin;
-    higher_by_ode(t);
+    higher_by_ode<kBounds>(t);
     return t;
   }
 
   // G'' = -2 sigma G' - rho^2 G and so on: no cancellation beyond a small
   // factor where the roots are complex (|p| = rho) or u |p| is small.
+  template <bool kBounds>
   void higher_by_ode(Transition<Work>& t) const {
     t.g2 = -2 * sigma_ * t.dg - rho2_ * t.g;
     t.g3 = -2 * sigma_ * t.g2 - rho2_ * t.dg;
+    if constexpr (!kBounds) return;
     t.g4 = -2 * sigma_ * t.g3 - rho2_ * t.g2;
     t.mag_g2 = 2 * sigma_ * t.mag_dg + rho2_ * t.mag_g;
     t.mag_g3 = 2 * sigma_ * t.mag_g2 + rho2_ * t.mag_dg;
     t.mag_g4 = 2 * sigma_ * t.mag_g3 + rho2_ * t.mag_g2;
   }
 
+  template <bool kBounds>
   Transition<Work> overdamped(const Work& u) const {
     using boost::math::expm1;
     using std::exp;
@@ -262,7 +274,7 @@ class TransitionFunctions {
     if (!rates_form) {
       t.g1 = (1 - t.phi11) / rho2_;
       t.mag_g1 = (1 + t.mag_phi11) / rho2_;
-      ramp_from_g1(u, t);
+      ramp_from_g1<kBounds>(u, t);
     } else {
       // Slow root: G1 = u [phi1(-k1 u) - phi1(-k2 u)] / (k2 - k1), with
       // (k2 - k1) u = 2 mu u = x (>= 1, or below 1 where 1 - Phi11 cancels
@@ -317,9 +329,10 @@ class TransitionFunctions {
   // G2 = (u - G - 2 sigma G1) / rho^2 (the ODE integrated twice), beyond the
   // series: there u rate > 1/2, so u - G cancels by at most a small factor,
   // which the magnitude carries.
+  template <bool kBounds>
   void ramp_from_g1(const Work& u, Transition<Work>& t) const {
     t.ramp = (u - t.g - 2 * sigma_ * t.g1) / rho2_;
-    t.mag_ramp = (u + t.mag_g + 2 * sigma_ * t.mag_g1) / rho2_;
+    if constexpr (kBounds) t.mag_ramp = (u + t.mag_g + 2 * sigma_ * t.mag_g1) / rho2_;
   }
 
   Work sigma_, rho2_, rho_ = 0, rate_ = 0;
