@@ -7,6 +7,7 @@
 
 #include "numeric/double_double_lanes.hpp"
 #include "numeric/double_double_table.hpp"
+#include "numeric/double_double_trig.hpp"
 
 namespace frictionref::detail {
 namespace {
@@ -17,100 +18,13 @@ using lanes::Lanes;
 using lanes::magnitude;
 using lanes::Mask;
 using lanes::Pair;
+using lanes::quotient;
 using lanes::splat;
+using lanes::Trig;
+using lanes::trig_error;
 
-// The error of sin_cos beyond its argument's, for |d| <= 0.01228 (docs/theory.md
-// 10.3): the d^4 terms of cos d - 1 (below 9.5e-10) with eleven roundings
-// of u, 1.2e-24; the sum formulas' terms rounded in double, 2.2e-25; the
-// dropped products S.lo (cos d - 1 + d^2/2) and C.lo (sin d - d.hi +
-// d.hi^3/6), 5.4e-26; sin d beyond d.hi - d.hi^3/6 (series, roundings),
-// 3.8e-27; the table, 1.2e-32. Together 1.5e-24 < 2^-79; the bound is 9
-// times that. The reduction adds |j| 2^-94 (two roundings of terms up to
-// |j| 2^-44: |j| 2^-96).
-constexpr double kTrigError = 0x1p-76;
-constexpr double kReductionErrorPerStep = 0x1p-94;
 // The ranges of |h| = |w t - w t_a| with bounds of their own.
 constexpr double kRange[] = {2, 8, 64, 513};
-
-struct Trig {
-  Pair sin, cos;
-};
-
-// The bound on sin_cos's error for an argument within `argument_error` of
-// y and a reduction by |j| <= j_max steps.
-Lanes trig_error(Lanes argument_error, Lanes j_max) {
-  return argument_error + (kTrigError + j_max * kReductionErrorPerStep);
-}
-
-// table[index] per lane (the masked form: the plain one reads an
-// uninitialized register in GCC 12's header).
-inline Lanes gather(const double* table, __m128i index) {
-  return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), table, index,
-                                  _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
-}
-
-// sin and cos of base pi/128 + y, for |y.hi| <= 2^9 and base in 0..255
-// (error: trig_error with |j| the table steps taken, below 2^15).
-// Inlined into the row loop, as it was measured (docs/benchmarks.md).
-__attribute__((always_inline)) inline Trig sin_cos(const Pair& y, __m128i base,
-                                                   const DoubleDoubleTrigTable& t) {
-  const Lanes j = lanes::nearest_integer(y.hi * t.steps_per_radian);
-  // d = y - j pi/128: j reduce1 and its difference with y.hi are exact; the
-  // rest are terms below |j| 2^-44.
-  const Pair r = lanes::two_sum(y.hi, -j * t.reduce1);
-  const Pair jr2 = lanes::two_prod(j, splat(t.reduce2));
-  const Lanes low = ((r.lo + y.lo) - jr2.hi) - (jr2.lo + j * t.reduce3);
-  const Pair d = lanes::two_sum(r.hi, low);
-  // sin d = d.hi + c3 + sin_small with c3 = -d.hi^3 / 6 as a pair (exact
-  // products, 1/6 as a pair) and sin_small = d.lo, d.lo's first-order share
-  // and the terms from d^5 on (below 2.4e-12). cos d = 1 + q_hi + q_lo with
-  // q_hi = -d.hi^2 / 2 exactly. Series truncated below 3e-29.
-  const Pair square = lanes::two_prod(d.hi, d.hi);
-  const Lanes d2 = square.hi;
-  const Pair cube = lanes::two_prod(d.hi, square.hi);
-  const Lanes cube_lo = cube.lo + d.hi * square.lo;
-  const Pair c3_top = lanes::two_prod(cube.hi, splat(-t.sixth_hi));
-  const Lanes c3_hi = c3_top.hi;
-  const Lanes c3_lo = c3_top.lo - (cube.hi * t.sixth_lo + cube_lo * t.sixth_hi);
-  const Lanes sin_small =
-      ((c3_lo - d.lo * d2 * 0.5) +
-       d.hi * (d2 * d2) * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880)))) +
-      d.lo;
-  const Lanes q_hi = -0.5 * square.hi;
-  const Lanes q_lo =
-      (-0.5 * square.lo - d.hi * d.lo) +
-      d2 * d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 + d2 * (-1.0 / 3628800))));
-  const __m128i index = _mm_and_si128(_mm_add_epi32(_mm256_cvtpd_epi32(j), base),
-                                      _mm_set1_epi32(DoubleDoubleTrigTable::kSize - 1));
-  const Lanes s_hi = gather(t.sin_hi, index);
-  const Lanes s_lo = gather(t.sin_lo, index);
-  const Lanes c_hi = gather(t.cos_hi, index);
-  const Lanes c_lo = gather(t.cos_lo, index);
-  // sin = S + S q + C sin d and cos = C + C q - S sin d. The products of the
-  // leading parts are exact and so is their sum with S or C; every other
-  // term is below 1e-9 (rounded in double), the smallest added first.
-  const Pair p1 = lanes::two_prod(s_hi, q_hi);
-  const Pair p2 = lanes::two_prod(c_hi, d.hi);
-  const Pair p5 = lanes::two_prod(c_hi, c3_hi);
-  const Pair a1 = lanes::two_sum(p1.hi, p5.hi);
-  const Pair a2 = lanes::two_sum(p2.hi, a1.hi);
-  const Pair a3 = lanes::two_sum(s_hi, a2.hi);
-  const Lanes sin_rest = ((((s_lo + p1.lo + p2.lo + p5.lo) + (a1.lo + a2.lo + a3.lo)) +
-                           (s_lo * q_hi + c_lo * d.hi + c_lo * c3_hi)) +
-                          c_hi * sin_small) +
-                         s_hi * q_lo;
-  const Pair p3 = lanes::two_prod(c_hi, q_hi);
-  const Pair p4 = lanes::two_prod(-s_hi, d.hi);
-  const Pair p6 = lanes::two_prod(-s_hi, c3_hi);
-  const Pair b1 = lanes::two_sum(p3.hi, p6.hi);
-  const Pair b2 = lanes::two_sum(p4.hi, b1.hi);
-  const Pair b3 = lanes::two_sum(c_hi, b2.hi);
-  const Lanes cos_rest = ((((c_lo + p3.lo + p4.lo + p6.lo) + (b1.lo + b2.lo + b3.lo)) +
-                           (c_lo * q_hi - s_lo * d.hi - s_lo * c3_hi)) -
-                          s_hi * sin_small) +
-                         c_hi * q_lo;
-  return {lanes::two_sum(a3.hi, sin_rest), lanes::two_sum(b3.hi, cos_rest)};
-}
 
 // The closed form (double_double_slip.hpp), one text for the lanes' values
 // (Pair) and for the bounds on their errors (Envelope).
@@ -126,16 +40,6 @@ template <class V>
 V position_at(const V& x0, const V& w_over_omega, const V& half_sr_over_omega,
               const V& b_over_omega, const V& h, const V& sin_tau) {
   return x0 + h * (w_over_omega - half_sr_over_omega * h) - b_over_omega * sin_tau;
-}
-
-// n / d with |error| <= 2^-100 |n / d| (9 u^2 by the residual's analysis:
-// n - q0 d.hi is exact by Sterbenz's lemma).
-Bounded quotient(double n, const Pair& d) {
-  const Lanes q0 = splat(n) / d.hi;
-  const Pair p = lanes::two_prod(q0, d.hi);
-  const Lanes residual = ((splat(n) - p.hi) - p.lo) - q0 * d.lo;
-  const Pair q = lanes::fast_two_sum(q0, residual / d.hi);
-  return {q, magnitude(q0) * 0x1p-100 + lanes::kUnderflowSlack};
 }
 
 double first(Lanes x) { return x[0]; }
