@@ -123,6 +123,36 @@ inline Bounded quotient(double n, const Pair& d) {
   return {q, magnitude(q0) * 0x1p-100 + kUnderflowSlack};
 }
 
+// x / y, for constants (once per phase): q0 = x.hi / y.hi corrected by the
+// residual x - q0 y in double-double (rounding within 2^-98 |q|, generous
+// against the 15u^2 of Joldes, Muller and Popescu's DWDivDW), and the
+// operands' errors carried: |x / y - x' / y'| <= (e_x + |q| e_y) / (|y| - e_y).
+// Where |y.hi| does not exceed e_y the error is infinite.
+inline Bounded operator/(const Bounded& x, const Bounded& y) {
+  const Lanes q0 = x.value.hi / y.value.hi;
+  const Pair residual = x.value - Pair{q0, splat(0)} * y.value;
+  const Pair q = fast_two_sum(q0, (residual.hi + residual.lo) / y.value.hi);
+  const Lanes size = magnitude(q.hi) * (1 + 0x1p-50);
+  const Lanes room = magnitude(y.value.hi) * (1 - 0x1p-50) - y.error;
+  const Lanes carried = (x.error + size * y.error) / room * (1 + 0x1p-40);
+  const Lanes error = room > splat(0) ? carried : splat(__builtin_inf());
+  return {q, error + (size * 0x1p-98 + kUnderflowSlack)};
+}
+
+// sqrt(x) for x.hi > 0 (constants): s0 = sqrt(x.hi) corrected by one Newton
+// step in double-double (within 2^-98 |s|), and |sqrt x - sqrt x'| <= e_x /
+// sqrt(x.hi - e_x). Where x.hi does not exceed e_x the error is infinite.
+inline Bounded square_root(const Bounded& x) {
+  const Lanes s0 = _mm256_sqrt_pd(x.value.hi);
+  const Pair square = two_prod(s0, s0);
+  const Pair residual = x.value - square;
+  const Pair s = fast_two_sum(s0, (residual.hi + residual.lo) / (2 * s0));
+  const Lanes room = x.value.hi * (1 - 0x1p-50) - x.error;
+  const Lanes carried = x.error / _mm256_sqrt_pd(room) * (1 + 0x1p-40);
+  const Lanes error = room > splat(0) ? carried : splat(__builtin_inf());
+  return {s, error + (magnitude(s0) * 0x1p-98 + kUnderflowSlack)};
+}
+
 // A bound on a family of Bounded values: value.hi >= |value| and error >=
 // the error of each member. Subtraction adds, so each result bounds the
 // magnitude of every signed instance of the same expression, and its error

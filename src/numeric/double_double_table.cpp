@@ -80,7 +80,32 @@ DoubleDoubleTrigTable make_table() {
   return t;
 }
 
+DoubleDoubleExpTable make_exp_table() {
+  DoubleDoubleExpTable t{};
+  for (int m = -DoubleDoubleExpTable::kHalf; m <= DoubleDoubleExpTable::kHalf; ++m)
+    split(exp(Fifty(m) / 64), t.exp_hi[m + DoubleDoubleExpTable::kHalf],
+          t.exp_lo[m + DoubleDoubleExpTable::kHalf]);
+  const Fifty ln2 = boost::math::constants::ln_two<Fifty>();
+  // ln 2 is in [2^-1, 2^0).
+  const Fifty l1 = rounded_to_bits(ln2, 0, 42);
+  t.ln2_1 = static_cast<double>(l1);
+  t.ln2_2 = static_cast<double>(ln2 - l1);
+  t.ln2_3 = static_cast<double>(ln2 - l1 - Fifty(t.ln2_2));
+  t.inverse_ln2 = static_cast<double>(1 / ln2);
+  Fifty factorial = 1;
+  for (int n = 0; n <= DoubleDoubleExpTable::kTerms; ++n) {
+    if (n > 0) factorial *= n;
+    split(1 / factorial, t.factorial_hi[n], t.factorial_lo[n]);
+  }
+  return t;
+}
+
 }  // namespace
+
+const DoubleDoubleExpTable& double_double_exp_table() {
+  static const DoubleDoubleExpTable table = make_exp_table();
+  return table;
+}
 
 bool double_double_lanes_available() {
   static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");

@@ -25,6 +25,21 @@ struct DoubleDoubleTrigTable {
 // Built once (thread-safe), about 2 ms.
 const DoubleDoubleTrigTable& double_double_trig_table();
 
+// The constants of the double-double exponential (double_double_exp.hpp):
+// e^(m/64) for |m| <= kHalf as pairs, ln 2 split so that k ln2_1 is exact for
+// |k| < 2^11, and 1/n! as pairs for the series. Rounded once from 50 digits.
+struct DoubleDoubleExpTable {
+  static constexpr int kHalf = 24;   // m in [-24, 24]
+  static constexpr int kTerms = 12;  // 1/n!, n = 0..kTerms
+  alignas(32) double exp_hi[2 * kHalf + 1];
+  alignas(32) double exp_lo[2 * kHalf + 1];
+  double ln2_1, ln2_2, ln2_3;  // ln 2 = ln2_1 + ln2_2 + ln2_3 + (< 2^-150); ln2_1: 42 bits
+  double inverse_ln2;          // 1 / ln 2, rounded
+  double factorial_hi[kTerms + 1], factorial_lo[kTerms + 1];  // 1/n!
+};
+
+const DoubleDoubleExpTable& double_double_exp_table();
+
 // True where this CPU has AVX2 and FMA, the instructions of
 // numeric/double_double_lanes.hpp (its users run only then).
 bool double_double_lanes_available();

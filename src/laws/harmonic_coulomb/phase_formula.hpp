@@ -13,7 +13,7 @@
 #include "engine/phase_formula.hpp"
 #include "engine/scalar_traits.hpp"
 #include "laws/harmonic_coulomb/double_double_slip.hpp"
-#include "laws/harmonic_coulomb/fast_slip_rows.hpp"
+#include "laws/fast_slip_rows.hpp"
 #include "laws/harmonic_coulomb/phase_law.hpp"
 
 namespace frictionref::detail {

@@ -2,11 +2,11 @@
 // its slip law (or the rest position of a stick). With a ground record the
 // slip is carried from the phase's start to each segment of the record it
 // crosses, as the engine carried it (family.hpp), and evaluated by that
-// segment's law. A model without spring, damper, harmonics or record (static
-// friction above R, a force offset) slips by the seed's law with a constant
-// force: for double its rows take the seed's fast path first
-// (fast_slip_rows.hpp, docs/theory.md 10), the long double law where it
-// cannot decide.
+// segment's law. For double, without a record, a slip's rows take a fast
+// path first (fast_slip_rows.hpp, docs/theory.md 10), the long double law
+// where it cannot decide: the seed's (a constant force F0 - s R added) for a
+// model without spring, damper or harmonics; the underdamped oscillator's
+// (theory.md 10.6) for a spring.
 #pragma once
 
 #include <algorithm>
@@ -18,8 +18,9 @@
 
 #include "engine/phase_formula.hpp"
 #include "engine/scalar_traits.hpp"
+#include "laws/fast_slip_rows.hpp"
 #include "laws/harmonic_coulomb/double_double_slip.hpp"
-#include "laws/harmonic_coulomb/fast_slip_rows.hpp"
+#include "laws/linear_oscillator/double_double_oscillator.hpp"
 #include "laws/linear_oscillator/oscillator.hpp"
 #include "laws/linear_oscillator/slip_law.hpp"
 
@@ -42,13 +43,35 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
       laws_.push_back(std::move(next));
     }
     if constexpr (std::is_same_v<Real, double>) {
-      const bool seed_law = model.stiffness == 0 && model.damping == 0 && model.harmonics.empty() &&
-                            !model.ground_motion;
-      if (seed_law && double_double_lanes_available()) {
-        fast_.emplace(SeedSlipStart{model.omega, model.amplitude, model.mass, model.friction,
-                                    slip_sign(phase.kind), phase.t_begin, phase.x_begin,
-                                    phase.v_begin, model.force_offset});
-        if (!fast_->usable()) fast_.reset();
+      if (model.ground_motion || !double_double_lanes_available()) return;
+      const int sign = slip_sign(phase.kind);
+      if (model.stiffness == 0 && model.damping == 0 && model.harmonics.empty()) {
+        seed_fast_.emplace(SeedSlipStart{model.omega, model.amplitude, model.mass, model.friction,
+                                         sign, phase.t_begin, phase.x_begin, phase.v_begin,
+                                         model.force_offset});
+        if (!seed_fast_->usable()) seed_fast_.reset();
+      } else if (model.stiffness > 0 &&
+                 model.harmonics.size() <= OscillatorSlipStart::kMaxHarmonics) {
+        OscillatorSlipStart start{};
+        start.omega = model.omega;
+        start.amplitude = model.amplitude;
+        start.mass = model.mass;
+        start.friction = model.friction;
+        start.stiffness = model.stiffness;
+        start.damping = model.damping;
+        start.force_offset = model.force_offset;
+        start.harmonics = static_cast<int>(model.harmonics.size());
+        for (std::size_t j = 0; j < model.harmonics.size(); ++j) {
+          start.harmonic_amplitude[j] = model.harmonics[j].amplitude;
+          start.harmonic_omega[j] = model.harmonics[j].omega;
+          start.harmonic_phase[j] = model.harmonics[j].phase;
+        }
+        start.sign = sign;
+        start.t_begin = phase.t_begin;
+        start.x_begin = phase.x_begin;
+        start.v_begin = phase.v_begin;
+        spring_fast_.emplace(start);
+        if (!spring_fast_->usable()) spring_fast_.reset();
       }
     }
   }
@@ -60,12 +83,12 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   }
 
   void at_many(const Real* t, std::size_t n, BasicState<Real>* out) const override {
-    if (!fast_) {
-      for (std::size_t i = 0; i < n; ++i) out[i] = long_double_at(t[i]);
-      return;
+    if constexpr (std::is_same_v<Real, double>) {
+      const auto slow = [this](double ti) { return long_double_at(ti); };
+      if (seed_fast_) return fast_slip_rows(*seed_fast_, phase_, t, n, out, slow);
+      if (spring_fast_) return fast_slip_rows(*spring_fast_, phase_, t, n, out, slow);
     }
-    if constexpr (std::is_same_v<Real, double>)
-      fast_slip_rows(*fast_, phase_, t, n, out, [this](double ti) { return long_double_at(ti); });
+    for (std::size_t i = 0; i < n; ++i) out[i] = long_double_at(t[i]);
   }
 
   // The state from the long double laws alone (what the fast path must
@@ -87,7 +110,8 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   // The fast path's answer alone, where it decides (tests).
   bool fast_at(const Real& t, BasicState<Real>& state) const {
     if constexpr (std::is_same_v<Real, double>) {
-      return fast_ && fast_slip_row(*fast_, phase_, t, state);
+      if (seed_fast_) return fast_slip_row(*seed_fast_, phase_, t, state);
+      return spring_fast_ && fast_slip_row(*spring_fast_, phase_, t, state);
     } else {
       (void)t;
       (void)state;
@@ -99,7 +123,9 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   BasicPhase<Real> phase_;
   Oscillator<Work> oscillator_;
   std::vector<LinearSlipLaw<Work>> laws_;  // in time order; they point into oscillator_
-  std::optional<DoubleDoubleSlip> fast_;   // the seed's law, for double, where the CPU allows
+  // For double, where the CPU allows: the seed's law, or the underdamped spring's.
+  std::optional<DoubleDoubleSlip> seed_fast_;
+  std::optional<DoubleDoubleOscillator> spring_fast_;
 };
 
 }  // namespace frictionref::detail

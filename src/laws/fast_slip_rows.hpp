@@ -1,19 +1,19 @@
-// A slip's dense rows through the fast path (double_double_slip.hpp), the
-// rows it cannot decide from the long double closed form (Ziv's strategy):
-// the seed's dense output, and the general model's where its slip is the
-// same law (no spring, damper, harmonic or record).
+// A slip's dense rows through a fast path (double_double_slip.hpp, or
+// double_double_oscillator.hpp for an underdamped spring), the rows it
+// cannot decide from the long double closed form (Ziv's strategy): the
+// seed's dense output and the general model's.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
 
 #include "engine/phase_formula.hpp"
-#include "laws/harmonic_coulomb/double_double_slip.hpp"
 
 namespace frictionref::detail {
 
-template <class LongDoubleAt>
-void fast_slip_rows(const DoubleDoubleSlip& fast, const BasicPhase<double>& phase, const double* t,
+// Fast: DoubleDoubleSlip or DoubleDoubleOscillator (their evaluate()).
+template <class Fast, class LongDoubleAt>
+void fast_slip_rows(const Fast& fast, const BasicPhase<double>& phase, const double* t,
                     std::size_t n, BasicState<double>* out, const LongDoubleAt& long_double_at) {
   constexpr std::size_t kChunk = 64;
   double x[kChunk], v[kChunk], a[kChunk];
@@ -28,8 +28,9 @@ void fast_slip_rows(const DoubleDoubleSlip& fast, const BasicPhase<double>& phas
 }
 
 // The fast path's answer alone at t, where it decides (tests).
-inline bool fast_slip_row(const DoubleDoubleSlip& fast, const BasicPhase<double>& phase, double t,
-                          BasicState<double>& state) {
+template <class Fast>
+bool fast_slip_row(const Fast& fast, const BasicPhase<double>& phase, double t,
+                   BasicState<double>& state) {
   double x, v, a;
   unsigned char decided;
   fast.evaluate(&t, 1, &x, &v, &a, &decided);

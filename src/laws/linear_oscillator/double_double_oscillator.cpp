@@ -1,0 +1,286 @@
+// Compiled with -mavx2 -mfma -ffp-contract=off (src/CMakeLists.txt) and
+// entered only where double_double_lanes_available(). It includes nothing
+// that defines inline functions of the library or the standard library (see
+// double_double_slip.cpp).
+#include "laws/linear_oscillator/double_double_oscillator.hpp"
+
+#include "numeric/double_double_exp.hpp"
+#include "numeric/double_double_lanes.hpp"
+#include "numeric/double_double_table.hpp"
+#include "numeric/double_double_trig.hpp"
+
+namespace frictionref::detail {
+namespace {
+
+using lanes::Bounded;
+using lanes::Envelope;
+using lanes::exact;
+using lanes::Lanes;
+using lanes::magnitude;
+using lanes::Mask;
+using lanes::Pair;
+using lanes::quotient;
+using lanes::splat;
+using lanes::Trig;
+using lanes::trig_error;
+
+// The ranges of h = w t - w t_a with bounds of their own (as the seed's).
+constexpr double kRange[] = {2, 8, 64, 513};
+constexpr double kLargestAngle = 512;  // of q_j h + offset and of nu h
+constexpr double kLargestDecay = 708;  // of sigma h: e^-708 is still normal
+
+double first(Lanes x) { return x[0]; }
+bool finite(double x) { return x - x == 0; }
+double absolute(double x) { return x < 0 ? -x : x; }
+
+// The closed form (double_double_oscillator.hpp), one text for the lanes'
+// values (Pair) and for the bounds on their errors (Envelope).
+template <class V>
+struct State {
+  V x, v, a;
+};
+template <class V>
+V phase_of(const V& offset, const V& q, const V& h) {
+  return offset + q * h;
+}
+// A term's share: its coefficients on sin and cos in x, v and a.
+template <class V>
+void add_share(State<V>& s, const V& x_sin, const V& x_cos, const V& v_sin, const V& v_cos,
+               const V& a_sin, const V& a_cos, const V& sine, const V& cosine) {
+  s.x = s.x + (x_sin * sine + x_cos * cosine);
+  s.v = s.v + (v_sin * sine + v_cos * cosine);
+  s.a = s.a + (a_sin * sine + a_cos * cosine);
+}
+template <class V>
+void add_free(State<V>& s, const V& x_cos, const V& x_sin, const V& v_cos, const V& v_sin,
+              const V& a_cos, const V& a_sin, const V& decay, const V& cosine, const V& sine) {
+  s.x = s.x + decay * (x_cos * cosine + x_sin * sine);
+  s.v = s.v + decay * (v_cos * cosine + v_sin * sine);
+  s.a = s.a + decay * (a_cos * cosine + a_sin * sine);
+}
+
+// k pi/128 as a bounded pair, |k| < 2^30 (as the seed's start angle).
+Bounded table_angle(Lanes k, const DoubleDoubleTrigTable& table) {
+  const Lanes k3 = k * table.base3;
+  return exact(k * table.base1) + exact(lanes::two_prod(k, splat(table.base2))) +
+         Bounded{{k3, splat(0)}, magnitude(k3) * 0x1p-52 + magnitude(k) * 0x1p-130};
+}
+
+}  // namespace
+
+void double_double_exp(double hi, double lo, double out[3]) {
+  const Pair e = lanes::exp_of(Pair{splat(hi), splat(lo)}, double_double_exp_table());
+  out[0] = first(e.hi);
+  out[1] = first(e.lo);
+  out[2] = lanes::kExpError;
+}
+
+DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
+  const auto moderate = [](double z) {
+    return finite(z) && (z == 0 || (absolute(z) >= 0x1p-500 && absolute(z) <= 0x1p500));
+  };
+  if (!(moderate(s.omega) && moderate(s.amplitude) && moderate(s.mass) && moderate(s.friction) &&
+        moderate(s.stiffness) && moderate(s.damping) && moderate(s.force_offset) &&
+        moderate(s.omega * s.mass) && finite(s.t_begin) && finite(s.x_begin) && finite(s.v_begin)))
+    return;
+  if (!(s.omega > 0 && s.mass > 0 && s.stiffness > 0 && s.damping >= 0 &&
+        (s.sign == 1 || s.sign == -1) && s.harmonics >= 0 &&
+        s.harmonics <= OscillatorSlipStart::kMaxHarmonics))
+    return;
+  for (int j = 0; j < s.harmonics; ++j)
+    if (!(moderate(s.harmonic_amplitude[j]) && moderate(s.harmonic_omega[j]) &&
+          s.harmonic_omega[j] > 0 && finite(s.harmonic_phase[j]) &&
+          absolute(s.harmonic_phase[j]) <= 0x1p20))
+      return;
+  const DoubleDoubleTrigTable& table = double_double_trig_table();
+  const Lanes omega = splat(s.omega);
+  const Pair a = lanes::two_prod(omega, splat(s.t_begin));  // w t_a exactly
+  if (!(absolute(first(a.hi)) <= 0x1p24)) return;
+
+  const Pair mass_omega = lanes::two_prod(splat(s.mass), omega);
+  const Bounded mass_omega2 = exact(mass_omega) * exact(omega);
+  const Bounded rho2 = exact(splat(s.stiffness)) / mass_omega2;
+  const Bounded sigma = lanes::scaled(quotient(s.damping, mass_omega), 0.5);
+  const Bounded nu2 = rho2 - sigma * sigma;
+  // Underdamped, resolvably: otherwise the long double path alone.
+  if (!(first(nu2.value.hi) > 4 * first(nu2.error))) return;
+  const Bounded nu = lanes::square_root(nu2);
+  const Bounded inverse_omega = quotient(1.0, Pair{omega, splat(0)});
+  const Bounded omega_b = exact(omega);
+  const Bounded r = quotient(s.friction, mass_omega);
+  const Bounded sr = s.sign > 0 ? r : -r;
+  const Bounded g0 = s.force_offset == 0 ? -sr : quotient(s.force_offset, mass_omega) - sr;
+  const Bounded steady = g0 / rho2;  // P
+
+  const auto keep = [](const Bounded& c) {
+    return Constant{first(c.value.hi), first(c.value.lo), first(c.error)};
+  };
+  // The forcing terms: the particular solution and its slope at h = 0.
+  Bounded y_p = steady, v_p = exact(splat(0));
+  terms_ = 1 + s.harmonics;
+  for (int j = 0; j < terms_; ++j) {
+    const double amplitude = j == 0 ? s.amplitude : s.harmonic_amplitude[j - 1];
+    const Bounded b = quotient(amplitude, mass_omega);
+    const Bounded q =
+        j == 0 ? exact(splat(1)) : quotient(s.harmonic_omega[j - 1], Pair{omega, splat(0)});
+    const Bounded theta = j == 0 ? exact(a) : q * exact(a) + exact(splat(s.harmonic_phase[j - 1]));
+    if (!(absolute(first(theta.value.hi)) <= 0x1p24)) return;
+    const Lanes k = lanes::nearest_integer(theta.value.hi * table.steps_per_radian);
+    const Bounded offset = theta - table_angle(k, table);  // |offset| <= pi/256
+    Term& term = term_[j];
+    term.base =
+        static_cast<int>(static_cast<long long>(first(k)) & (DoubleDoubleTrigTable::kSize - 1));
+    const Trig at_start = lanes::sin_cos(offset.value, _mm_set1_epi32(term.base), table);
+    const Lanes trig_error_at_start = trig_error(offset.error, splat(1));
+    const Bounded sine{at_start.sin, trig_error_at_start};
+    const Bounded cosine{at_start.cos, trig_error_at_start};
+    // H = (rho^2 - q^2 - 2 i sigma q) / D, D = (rho^2 - q^2)^2 + (2 sigma q)^2;
+    // the term b Im(H e^{i theta}) = A sin theta + C cos theta.
+    const Bounded detuning = rho2 - q * q;
+    const Bounded friction_part = lanes::scaled(sigma * q, 2);
+    const Bounded denominator = detuning * detuning + friction_part * friction_part;
+    const Bounded coefficient_sin = b * detuning / denominator;          // A
+    const Bounded coefficient_cos = -(b * friction_part / denominator);  // C
+    y_p = y_p + (coefficient_sin * sine + coefficient_cos * cosine);
+    v_p = v_p + q * (coefficient_sin * cosine - coefficient_cos * sine);
+    const Bounded q2 = q * q;
+    term.q = keep(q);
+    term.offset = keep(offset);
+    term.x_sin = keep(coefficient_sin * inverse_omega);
+    term.x_cos = keep(coefficient_cos * inverse_omega);
+    term.v_sin = keep(-(q * coefficient_cos));
+    term.v_cos = keep(q * coefficient_sin);
+    term.a_sin = keep(-(omega_b * q2 * coefficient_sin));
+    term.a_cos = keep(-(omega_b * q2 * coefficient_cos));
+  }
+
+  // The free oscillation from the rest of the start: y_h(0) = C1, y_h'(0) = D1.
+  const Bounded c1 = exact(lanes::two_prod(omega, splat(s.x_begin))) - y_p;
+  const Bounded d1 = exact(splat(s.v_begin)) - v_p;
+  const Bounded c2 = (d1 + sigma * c1) / nu;
+  const Bounded d2 = -(nu * c1 + sigma * c2);
+  const Bounded e1 = nu * d2 - sigma * d1;
+  const Bounded e2 = -(nu * d1 + sigma * d2);
+  sigma_ = keep(sigma);
+  nu_ = keep(nu);
+  x_steady_ = keep(steady * inverse_omega);
+  x_cos_ = keep(c1 * inverse_omega);
+  x_sin_ = keep(c2 * inverse_omega);
+  v_cos_ = keep(d1);
+  v_sin_ = keep(d2);
+  a_cos_ = keep(omega_b * e1);
+  a_sin_ = keep(omega_b * e2);
+  omega_ = s.omega;
+  a_hi_ = first(a.hi);
+  a_lo_ = first(a.lo);
+  const auto all_finite = [](const Constant& c) {
+    return finite(c.hi) && finite(c.lo) && finite(c.error);
+  };
+  const Constant* const shared[] = {&sigma_, &nu_,    &x_steady_, &x_cos_, &x_sin_,
+                                    &v_cos_, &v_sin_, &a_cos_,    &a_sin_};
+  for (const Constant* c : shared)
+    if (!all_finite(*c)) return;
+  for (int j = 0; j < terms_; ++j) {
+    const Term& t = term_[j];
+    const Constant* const own[] = {&t.q,     &t.offset, &t.x_sin, &t.x_cos,
+                                   &t.v_sin, &t.v_cos,  &t.a_sin, &t.a_cos};
+    for (const Constant* c : own)
+      if (!all_finite(*c)) return;
+  }
+
+  // Bounds on the errors of x, v and a for h up to 2, 8, 64 and 513 rad (one
+  // range per lane), from the closed form on envelopes of its operands: the
+  // sines and cosines within 1 + 2^-50 with their errors for the largest
+  // phase and table steps of the range, e^{-sigma h} within 1 + 2^-40 (h >= 0)
+  // with its error.
+  const auto envelope = [](const Constant& c) {
+    return Envelope{{{splat(absolute(c.hi) + absolute(c.lo)), splat(0)}, splat(c.error)}};
+  };
+  const Lanes h_max{kRange[0], kRange[1], kRange[2], kRange[3]};
+  const Lanes tau_max = splat(absolute(a_hi_)) + h_max + 1;
+  const Envelope h{
+      {{h_max, splat(0)}, lanes::kAddError * (tau_max + absolute(a_hi_)) + lanes::kUnderflowSlack}};
+  const auto trig_envelope = [&](const Envelope& phase) {
+    const Lanes steps = phase.bound.value.hi * table.steps_per_radian + 1;
+    return Envelope{{{splat(1 + 0x1p-50), splat(0)}, trig_error(phase.bound.error, steps)}};
+  };
+  State<Envelope> bound{envelope(x_steady_), Envelope{exact(splat(0))}, Envelope{exact(splat(0))}};
+  for (int j = 0; j < terms_; ++j) {
+    const Term& t = term_[j];
+    const Envelope trig = trig_envelope(phase_of(envelope(t.offset), envelope(t.q), h));
+    add_share(bound, envelope(t.x_sin), envelope(t.x_cos), envelope(t.v_sin), envelope(t.v_cos),
+              envelope(t.a_sin), envelope(t.a_cos), trig, trig);
+  }
+  const Envelope decay_argument = envelope(sigma_) * h;
+  const Envelope decay{{{splat(1 + 0x1p-40), splat(0)},
+                        (lanes::kExpError + decay_argument.bound.error) * (1 + 0x1p-6) +
+                            lanes::kUnderflowSlack}};
+  const Envelope free_trig = trig_envelope(envelope(nu_) * h);
+  add_free(bound, envelope(x_cos_), envelope(x_sin_), envelope(v_cos_), envelope(v_sin_),
+           envelope(a_cos_), envelope(a_sin_), decay, free_trig, free_trig);
+  for (int k = 0; k < kRanges; ++k) {
+    velocity_error_[k] = bound.v.bound.error[k];
+    acceleration_error_[k] = bound.a.bound.error[k];
+    position_error_[k] = bound.x.bound.error[k];
+    if (!(finite(velocity_error_[k]) && finite(acceleration_error_[k]) &&
+          finite(position_error_[k])))
+      return;
+  }
+  usable_ = true;
+}
+
+void DoubleDoubleOscillator::evaluate(const double* t, std::size_t n, double* x, double* v,
+                                      double* a, unsigned char* decided) const {
+  const DoubleDoubleTrigTable& table = double_double_trig_table();
+  const DoubleDoubleExpTable& exp_table = double_double_exp_table();
+  const auto lanes_of = [](const Constant& c) { return Pair{splat(c.hi), splat(c.lo)}; };
+  const Lanes omega = splat(omega_);
+  const Pair start{splat(a_hi_), splat(a_lo_)};
+  const Pair sigma = lanes_of(sigma_), nu = lanes_of(nu_);
+  for (std::size_t i = 0; i < n; i += 4) {
+    // A short last group repeats its last time in the unused lanes.
+    const std::size_t used = n - i < 4 ? n - i : 4;
+    Lanes time;
+    for (std::size_t k = 0; k < 4; ++k) time[k] = t[i + (k < used ? k : used - 1)];
+    const Pair tau = lanes::two_prod(omega, time);  // w t exactly
+    const Pair h = tau - start;
+    Mask ok = (h.hi >= splat(0)) & (h.hi <= splat(kRange[kRanges - 1] * (1 - 0x1p-50)));
+    State<Pair> state{lanes_of(x_steady_), Pair{splat(0), splat(0)}, Pair{splat(0), splat(0)}};
+    for (int j = 0; j < terms_; ++j) {
+      const Term& term = term_[j];
+      const Pair phase = phase_of(lanes_of(term.offset), lanes_of(term.q), h);
+      ok &= magnitude(phase.hi) <= splat(kLargestAngle);
+      const Trig trig = lanes::sin_cos(phase, _mm_set1_epi32(term.base), table);
+      add_share(state, lanes_of(term.x_sin), lanes_of(term.x_cos), lanes_of(term.v_sin),
+                lanes_of(term.v_cos), lanes_of(term.a_sin), lanes_of(term.a_cos), trig.sin,
+                trig.cos);
+    }
+    const Pair decay_argument = sigma * h;
+    ok &= decay_argument.hi <= splat(kLargestDecay);
+    const Pair decay = lanes::exp_of(-decay_argument, exp_table);
+    const Pair free_phase = nu * h;
+    ok &= magnitude(free_phase.hi) <= splat(kLargestAngle);
+    const Trig free = lanes::sin_cos(free_phase, _mm_set1_epi32(0), table);
+    add_free(state, lanes_of(x_cos_), lanes_of(x_sin_), lanes_of(v_cos_), lanes_of(v_sin_),
+             lanes_of(a_cos_), lanes_of(a_sin_), decay, free.cos, free.sin);
+    // The bounds of the smallest range holding h.
+    Mask in[kRanges];
+    for (int k = 0; k < kRanges; ++k) in[k] = magnitude(h.hi) <= splat(kRange[k] * (1 - 0x1p-50));
+    const auto pick = [&](const double* bound) {
+      Lanes chosen = splat(bound[kRanges - 1]);
+      for (int k = kRanges - 2; k >= 0; --k) chosen = in[k] ? splat(bound[k]) : chosen;
+      return chosen;
+    };
+    ok &= lanes::decided(state.v, pick(velocity_error_)) &
+          lanes::decided(state.a, pick(acceleration_error_)) &
+          lanes::decided(state.x, pick(position_error_));
+    for (std::size_t k = 0; k < used; ++k) {
+      x[i + k] = state.x.hi[k];
+      v[i + k] = state.v.hi[k];
+      a[i + k] = state.a.hi[k];
+      decided[i + k] = ok[k] != 0;
+    }
+  }
+}
+
+}  // namespace frictionref::detail

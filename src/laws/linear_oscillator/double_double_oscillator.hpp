@@ -1,0 +1,91 @@
+// The fast path of the general model's dense output for an underdamped
+// spring without a record (docs/theory.md 10.6): a slip's x, v and a at many
+// times, four at once, in double-double arithmetic with a rigorous error
+// bound. Where the bound shows which double the exact closed form rounds
+// to, that double is the answer; elsewhere the lane is left undecided and
+// the caller evaluates it in long double (Ziv's strategy), as
+// double_double_slip.hpp does for the seed's slips.
+//
+// The exact closed form at exact arguments: tau = w t and a = w t_a exactly,
+// h = tau - a, y = w x, v = dy/dtau, and the forcing terms j (the main one
+// b_0 = B / (m w), q_0 = 1, phi_0 = 0; each harmonic b_j = B_j / (m w),
+// q_j = w_j / w, phi_j), theta_j = q_j tau + phi_j:
+//   y'' + 2 sigma y' + rho^2 y = f0 - s r + sum_j b_j sin theta_j,
+//   sigma = c / (2 m w), rho^2 = k / (m w^2), nu^2 = rho^2 - sigma^2 > 0,
+//   y = P + sum_j b_j Im(H_j e^{i theta_j}) + e^{-sigma h} (C1 cos nu h + C2 sin nu h),
+// H_j = 1 / (rho^2 - q_j^2 + 2 i sigma q_j), P = (f0 - s r) / rho^2, C1 and
+// C2 from (y_a, v_a) at h = 0; v and dv/dtau are its derivatives.
+#pragma once
+
+#include <cstddef>
+
+namespace frictionref::detail {
+
+// A slip of m x'' + c x' + k x = B sin(w t) + sum_j B_j sin(w_j t + phi_j)
+// + F0 - s R from (t_begin, x_begin, v_begin). Plain doubles only: the file
+// that computes with it is compiled for AVX2 and includes no library header
+// with inline functions (double_double_slip.cpp).
+struct OscillatorSlipStart {
+  static constexpr int kMaxHarmonics = 4;
+  double omega, amplitude, mass, friction, stiffness, damping, force_offset;
+  int harmonics;  // how many of the arrays below are used
+  double harmonic_amplitude[kMaxHarmonics], harmonic_omega[kMaxHarmonics],
+      harmonic_phase[kMaxHarmonics];
+  int sign;  // +1 forward, -1 backward
+  double t_begin, x_begin, v_begin;
+};
+
+// The double-double exponential of hi + lo (-708 <= hi <= 0) as a pair and
+// its relative error bound: out = {hi, lo, bound}. For tests of the bound;
+// only where double_double_lanes_available().
+void double_double_exp(double hi, double lo, double out[3]);
+
+class DoubleDoubleOscillator {
+ public:
+  // Only where double_double_lanes_available(). Not usable() for what it
+  // does not cover: no spring or an over- or critically damped one (or one
+  // whose nu^2 the bounds cannot resolve), more than kMaxHarmonics
+  // harmonics, |w t_a| or a harmonic's phase at t_a beyond 2^24, parameters
+  // beyond 2^+-500, non-finite constants.
+  explicit DoubleDoubleOscillator(const OscillatorSlipStart& start);
+
+  bool usable() const { return usable_; }
+
+  // As DoubleDoubleSlip::evaluate: decided[i] = 1 and x[i], v[i], a[i] the
+  // correctly rounded doubles of the closed form at t[i], or decided[i] = 0.
+  // Undecided besides the rows near rounding boundaries: times before the
+  // start or beyond 513 rad of forcing phase from it, rows where a term's
+  // phase (q_j h, nu h) leaves 512 rad or sigma h exceeds 708. Whether a
+  // time is decided depends on the start and that time only.
+  void evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
+                unsigned char* decided) const;
+
+ private:
+  struct Constant {
+    double hi = 0, lo = 0, error = 0;
+  };
+  static constexpr int kMaxTerms = OscillatorSlipStart::kMaxHarmonics + 1;
+  // One forcing term: q_j, theta_j(a) - base_j pi/128, the table index of
+  // base_j, and its coefficients on sin theta_j and cos theta_j in x, v, a.
+  struct Term {
+    Constant q, offset;
+    int base = 0;
+    Constant x_sin, x_cos, v_sin, v_cos, a_sin, a_cos;
+  };
+  static constexpr int kRanges = 4;
+
+  bool usable_ = false;
+  int terms_ = 0;
+  double omega_ = 0;
+  double a_hi_ = 0, a_lo_ = 0;  // w t_a exactly
+  Term term_[kMaxTerms];
+  Constant sigma_, nu_;
+  Constant x_steady_;  // P / w
+  // The free oscillation's coefficients on e^{-sigma h} cos nu h and
+  // e^{-sigma h} sin nu h in x, v and a.
+  Constant x_cos_, x_sin_, v_cos_, v_sin_, a_cos_, a_sin_;
+  double velocity_error_[kRanges] = {}, acceleration_error_[kRanges] = {},
+         position_error_[kRanges] = {};
+};
+
+}  // namespace frictionref::detail

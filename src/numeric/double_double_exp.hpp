@@ -1,0 +1,59 @@
+// The exponential on four lanes in double-double (numeric/double_double_lanes.hpp),
+// with the bound on its error (docs/theory.md 10.6). For the translation units
+// compiled with -mavx2 -mfma -ffp-contract=off only, entered only where
+// double_double_lanes_available().
+#pragma once
+
+#include <immintrin.h>
+
+#include "numeric/double_double_lanes.hpp"
+#include "numeric/double_double_table.hpp"
+#include "numeric/double_double_trig.hpp"
+
+namespace frictionref::detail::lanes {
+
+// Relative error of exp below, for an exact argument: the reduction's three
+// double-double sums (2^-104 of 0.35 each), ln 2's parts beyond ln2_3 times
+// |k| <= 1022 (2^-140), the series' twelve steps (a product within 5u^2
+// and a sum within 3.01u^2 of about 1 each: 2^-100), its tail beyond w^12/12!
+// (2^-123), the table's and the coefficients' rounding (2^-106 each) and the
+// last product (5u^2): together below 2^-99. The bound is 8 times that.
+// Below e^-600 the low part loses bits to underflow: there the error is
+// below 2^-1000 absolute instead (kUnderflowSlack).
+inline constexpr double kExpError = 0x1p-96;
+
+// e^z for -708 <= z.hi <= 0 (other lanes, NaN included, are clamped into
+// that range: their answer is meaningless, but the table is never read
+// outside; the caller masks them). z = k ln 2 + m / 64 + w with |w| <= 1/128:
+// e^z = 2^k e^(m/64) e^w, e^(m/64) from the table and e^w from its series to
+// w^12 / 12!.
+__attribute__((always_inline)) inline Pair exp_of(const Pair& argument,
+                                                  const DoubleDoubleExpTable& t) {
+  const Lanes clamped = _mm256_max_pd(_mm256_min_pd(argument.hi, splat(0)), splat(-708));
+  const Pair z{clamped, clamped == argument.hi ? argument.lo : splat(0)};
+  const Lanes k = nearest_integer(z.hi * t.inverse_ln2);
+  // z - k ln 2 as a pair: k ln2_1 is exact (42 bits times |k| < 2^11) and so
+  // is its 2Sum with z.hi; the rest in double-double sums.
+  const Pair r = two_sum(z.hi, -k * t.ln2_1);
+  const Pair k2 = two_prod(k, splat(t.ln2_2));
+  const Pair d =
+      add(add(add(r, Pair{z.lo, splat(0)}), Pair{-k2.hi, -k2.lo}), Pair{-k * t.ln2_3, splat(0)});
+  // d.hi - m / 64 is exact (a multiple of ulp(d.hi), below |d.hi|).
+  const Lanes m = nearest_integer(d.hi * 64);
+  const Pair w = fast_two_sum(d.hi - m * (1.0 / 64), d.lo);
+  Pair series{splat(t.factorial_hi[DoubleDoubleExpTable::kTerms]),
+              splat(t.factorial_lo[DoubleDoubleExpTable::kTerms])};
+  for (int n = DoubleDoubleExpTable::kTerms - 1; n >= 0; --n)
+    series = add(multiply(series, w), Pair{splat(t.factorial_hi[n]), splat(t.factorial_lo[n])});
+  const __m128i index =
+      _mm_add_epi32(_mm256_cvtpd_epi32(m), _mm_set1_epi32(DoubleDoubleExpTable::kHalf));
+  const Pair table{gather(t.exp_hi, index), gather(t.exp_lo, index)};
+  const Pair product = multiply(table, series);
+  // 2^k, k >= -1022: a normal double built from its exponent bits.
+  const __m256i bits = _mm256_slli_epi64(
+      _mm256_cvtepi32_epi64(_mm_add_epi32(_mm256_cvtpd_epi32(k), _mm_set1_epi32(1023))), 52);
+  const Lanes scale = _mm256_castsi256_pd(bits);
+  return {product.hi * scale, product.lo * scale};
+}
+
+}  // namespace frictionref::detail::lanes

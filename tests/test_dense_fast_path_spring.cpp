@@ -1,0 +1,317 @@
+// The general model's dense fast path for an underdamped spring
+// (double_double_oscillator.hpp, docs/theory.md 10.6) against an independent
+// 50-digit evaluation of the closed form (the textbook split into the steady
+// response and a damped free oscillation, with Boost's exp, sin and cos at
+// exact arguments; the long double path uses divided differences and
+// transition functions instead), and against the long double path it
+// short-cuts: the same rows, except where the long double row is not the
+// correctly rounded one and the fast row is.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <iostream>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "frictionref/error.hpp"
+#include "frictionref/exact_engine.hpp"
+#include "laws/linear_oscillator/double_double_oscillator.hpp"
+#include "laws/linear_oscillator/phase_formula.hpp"
+#include "numeric/double_double_table.hpp"
+#include "random_models.hpp"
+
+namespace frictionref {
+namespace {
+
+using Fifty = boost::multiprecision::cpp_bin_float_50;
+
+double nearest(const Fifty& x) {
+  const double d = static_cast<double>(x);
+  double best = d;
+  for (double n : {std::nextafter(d, -HUGE_VAL), std::nextafter(d, HUGE_VAL)})
+    if (abs(Fifty(n) - x) < abs(Fifty(best) - x)) best = n;
+  return best;
+}
+
+bool available() { return detail::double_double_lanes_available(); }
+
+// The slip's closed form in 50 digits (docs/theory.md 10.6), from the
+// phase's double start at exact w t, w t_a.
+struct Exact {
+  Fifty x, v, a;
+};
+class ExactSpringSlip {
+ public:
+  ExactSpringSlip(const Model& m, const Phase& p) : w_(m.omega), a_(w_ * Fifty(p.t_begin)) {
+    const Fifty mw = Fifty(m.mass) * w_;
+    sigma_ = Fifty(m.damping) / (2 * mw);
+    const Fifty rho2 = Fifty(m.stiffness) / (mw * w_);
+    nu_ = sqrt(rho2 - sigma_ * sigma_);
+    const Fifty g0 = (Fifty(m.force_offset) - slip_sign(p.kind) * Fifty(m.friction)) / mw;
+    steady_ = g0 / rho2;
+    terms_.push_back({Fifty(m.amplitude) / mw, Fifty(1), Fifty(0)});
+    for (const Harmonic& h : m.harmonics)
+      terms_.push_back({Fifty(h.amplitude) / mw, Fifty(h.omega) / w_, Fifty(h.phase)});
+    for (Term& t : terms_) {
+      // b Im(H e^{i theta}), H = 1 / (rho^2 - q^2 + 2 i sigma q).
+      const Fifty re = rho2 - t.q * t.q, im = 2 * sigma_ * t.q;
+      const Fifty d = re * re + im * im;
+      t.s = t.b * re / d;
+      t.c = -t.b * im / d;
+    }
+    const Particular at_start = particular(a_);
+    c1_ = w_ * Fifty(p.x_begin) - at_start.y;
+    d1_ = Fifty(p.v_begin) - at_start.v;
+    c2_ = (d1_ + sigma_ * c1_) / nu_;
+  }
+
+  Exact at(double t) const {
+    const Fifty tau = w_ * Fifty(t);
+    const Fifty h = tau - a_;
+    const Particular p = particular(tau);
+    const Fifty e = exp(-sigma_ * h), c = cos(nu_ * h), s = sin(nu_ * h);
+    // y_h = e (C1 c + C2 s) and its two derivatives.
+    const Fifty d2 = -(nu_ * c1_ + sigma_ * c2_);
+    const Fifty e1 = nu_ * d2 - sigma_ * d1_, e2 = -(nu_ * d1_ + sigma_ * d2);
+    const Fifty y = p.y + e * (c1_ * c + c2_ * s);
+    const Fifty v = p.v + e * (d1_ * c + d2 * s);
+    const Fifty dv = p.dv + e * (e1 * c + e2 * s);
+    return {y / w_, v, w_ * dv};
+  }
+
+ private:
+  struct Term {
+    Fifty b, q, phi, s = 0, c = 0;
+  };
+  struct Particular {
+    Fifty y, v, dv;
+  };
+  Particular particular(const Fifty& tau) const {
+    Particular p{steady_, 0, 0};
+    for (const Term& t : terms_) {
+      const Fifty theta = t.q * tau + t.phi;
+      const Fifty sn = sin(theta), cs = cos(theta);
+      p.y += t.s * sn + t.c * cs;
+      p.v += t.q * (t.s * cs - t.c * sn);
+      p.dv -= t.q * t.q * (t.s * sn + t.c * cs);
+    }
+    return p;
+  }
+  Fifty w_, a_, sigma_, nu_, steady_, c1_, d1_, c2_;
+  std::vector<Term> terms_;
+};
+
+// Random underdamped spring models from the seed's stream: natural frequency
+// w 10^u (u uniform on [-1, 1]), damping ratio 0 (a tenth) or log-uniform on
+// [1e-4, 0.95], and a tenth overdamped (ratio 1 to 4: the fast path stands
+// aside); Rs = R (1 + 10^u), u on [-15, 0]; F0 = 0 (a half) or +-(B + R) 10^u,
+// u on [-4, 0]; up to two harmonics B U(0, 1) sin(w 10^u t + phi), u on
+// [-1, 1], phi uniform on [-pi, pi].
+class SpringModels {
+ public:
+  explicit SpringModels(std::uint64_t seed) : stream_(seed), random_(seed + 1) {}
+  testing::RandomModel next() {
+    testing::RandomModel r = stream_.next();
+    Model& m = r.model;
+    const double natural = m.omega * std::pow(10.0, uniform(-1, 1));
+    const double pick = unit();
+    const double ratio = pick < 0.1   ? 0.0
+                         : pick < 0.2 ? uniform(1, 4)
+                                      : std::pow(10.0, uniform(-4, std::log10(0.95)));
+    m.stiffness = m.mass * natural * natural;
+    m.damping = 2 * ratio * m.mass * natural;
+    m.static_friction = m.friction * (1 + std::pow(10.0, uniform(-15, 0)));
+    m.force_offset = unit() < 0.5 ? 0.0
+                                  : (unit() < 0.5 ? 1 : -1) * (m.amplitude + m.friction) *
+                                        std::pow(10.0, uniform(-4, 0));
+    const int harmonics = static_cast<int>(unit() * 3);
+    for (int j = 0; j < harmonics; ++j)
+      m.harmonics.push_back({m.amplitude * unit(), m.omega * std::pow(10.0, uniform(-1, 1)),
+                             uniform(-3.141592653589793, 3.141592653589793)});
+    return r;
+  }
+
+ private:
+  double unit() { return std::ldexp(static_cast<double>(random_() >> 11), -53); }
+  double uniform(double a, double b) { return a + (b - a) * unit(); }
+  testing::ModelStream stream_;
+  std::mt19937_64 random_;
+};
+
+// Each slip among the first six phases of `count` random spring models, with
+// its formula; models the engine refuses are counted.
+template <class Visit>
+std::uint64_t for_each_spring_slip(std::uint64_t seed, int count, Visit visit) {
+  SpringModels models(seed);
+  std::uint64_t refused = 0;
+  for (int i = 0; i < count && !::testing::Test::HasFatalFailure(); ++i) {
+    const testing::RandomModel r = models.next();
+    try {
+      ExactEngine engine(r.model, r.t_end);
+      Phase phase;
+      for (int k = 0; k < 6 && engine.next(phase); ++k) {
+        if (phase.kind == PhaseKind::stick) continue;
+        const detail::LinearOscillatorFormula<double> formula(r.model, phase);
+        visit(r, phase, formula);
+      }
+    } catch (const InvalidInput&) {
+      ++refused;
+    }
+  }
+  return refused;
+}
+
+std::string describe_spring(const testing::RandomModel& r) {
+  const Model& m = r.model;
+  std::string text = testing::describe(r);
+  char more[256];
+  std::snprintf(more, sizeof more, " k=%.17g c=%.17g Rs=%.17g F0=%.17g", m.stiffness, m.damping,
+                m.static_limit(), m.force_offset);
+  text += more;
+  for (const Harmonic& h : m.harmonics) {
+    std::snprintf(more, sizeof more, " harmonic=%.17g,%.17g,%.17g", h.amplitude, h.omega, h.phase);
+    text += more;
+  }
+  return text;
+}
+
+TEST(DoubleDoubleExp, WithinItsBoundOfFiftyDigits) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  std::mt19937_64 random(20261127);
+  const auto unit = [&] { return std::ldexp(static_cast<double>(random() >> 11), -53); };
+  const Fifty ln2 = boost::math::constants::ln_two<Fifty>();
+  Fifty worst = 0;
+  double bound = 0;
+  for (int i = 0; i < 60000; ++i) {
+    // A third near the reduction's boundaries (k ln 2 +- 1/128 multiples), a
+    // third small, the rest anywhere in [-708, 0].
+    double hi;
+    if (i % 3 == 0)
+      hi = -static_cast<double>(ln2 * Fifty(std::floor(unit() * 1000)) +
+                                Fifty(std::floor(unit() * 45) - 22) / 64 + Fifty(1) / 128) *
+           (1 + (unit() - 0.5) * 1e-12);
+    else if (i % 3 == 1)
+      hi = -std::ldexp(unit(), -static_cast<int>(unit() * 60));
+    else
+      hi = -708 * unit();
+    if (hi > 0) hi = -hi;
+    if (hi < -708) hi = -708;
+    const double lo = hi * std::ldexp(unit() - 0.5, -53);
+    double out[3];
+    detail::double_double_exp(hi, lo, out);
+    const Fifty exact = exp(Fifty(hi) + Fifty(lo));
+    const Fifty error = abs(Fifty(out[0]) + Fifty(out[1]) - exact);
+    // Within the bound relative, plus 2^-1000 absolute (the low part's
+    // underflow near e^-708); the largest relative error where that is
+    // below the bound's 2^-40.
+    bound = out[2];
+    ASSERT_LE(error, Fifty(bound) * exact + Fifty(std::ldexp(1.0, -1000))) << hi;
+    if (exact > Fifty(std::ldexp(1.0, -900))) worst = std::max(worst, error / exact);
+  }
+  EXPECT_LT(worst, Fifty(bound) / 8) << static_cast<double>(worst);
+  std::cout << "largest relative error of exp: " << static_cast<double>(worst) << " (bound "
+            << bound << ")\n";
+}
+
+// Every value the fast path decides, at times spread over each slip and
+// crowded towards its stop, is the correctly rounded 50-digit value.
+TEST(DoubleDoubleOscillator, DecidedValuesAreCorrectlyRounded) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  std::mt19937_64 random(7);
+  const auto unit = [&] { return std::ldexp(static_cast<double>(random() >> 11), -53); };
+  std::uint64_t tried = 0, decided = 0;
+  for_each_spring_slip(11, 3000,
+                       [&](const testing::RandomModel& r, const Phase& phase,
+                           const detail::LinearOscillatorFormula<double>& formula) {
+                         std::optional<ExactSpringSlip> exact;
+                         for (int j = 0; j < 8; ++j) {
+                           const double fraction =
+                               j < 4 ? unit() : 1 - std::pow(10.0, -12 * unit());
+                           const double t = phase.t_begin + fraction * phase.duration();
+                           if (!(t > phase.t_begin && t < phase.t_end)) continue;
+                           ++tried;
+                           State fast;
+                           if (!formula.fast_at(t, fast)) continue;
+                           ++decided;
+                           if (!exact) exact.emplace(r.model, phase);
+                           const Exact e = exact->at(t);
+                           ASSERT_EQ(fast.x, nearest(e.x)) << describe_spring(r) << " t=" << t;
+                           ASSERT_EQ(fast.v, nearest(e.v)) << describe_spring(r) << " t=" << t;
+                           ASSERT_EQ(fast.a, nearest(e.a)) << describe_spring(r) << " t=" << t;
+                         }
+                       });
+  std::cout << decided << " of " << tried << " states decided by the fast path\n";
+  EXPECT_GT(tried, 10000u);
+  EXPECT_GT(decided, tried / 2);
+}
+
+bool same(const State& s, const State& r) {
+  return std::memcmp(&s.x, &r.x, sizeof(double)) == 0 &&
+         std::memcmp(&s.v, &r.v, sizeof(double)) == 0 &&
+         std::memcmp(&s.a, &r.a, sizeof(double)) == 0 && s.t == r.t && s.phase == r.phase;
+}
+
+// 10^5 random spring models, three rows in each slip among the first six
+// phases: the rows of the long double path, except where they differ; there
+// the fast row is the correctly rounded 50-digit value, and the long double
+// row is within 1e-6 of the motion's scale of it (rounding, not a different
+// formula).
+TEST(DenseFastPath, SpringSameRowsAsItsLongDoublePath) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  std::uint64_t rows = 0, decided = 0, differing = 0;
+  const std::uint64_t refused = for_each_spring_slip(
+      2028, 100000,
+      [&](const testing::RandomModel& r, const Phase& phase,
+          const detail::LinearOscillatorFormula<double>& formula) {
+        constexpr int kTimes = 3;
+        double times[kTimes];
+        for (int j = 0; j < kTimes; ++j)
+          times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
+        State fast[kTimes];
+        formula.at_many(times, kTimes, fast);
+        std::optional<ExactSpringSlip> exact;
+        for (int j = 0; j < kTimes; ++j) {
+          if (!(times[j] > phase.t_begin && times[j] < phase.t_end)) continue;
+          ++rows;
+          State only_fast;
+          decided += formula.fast_at(times[j], only_fast);
+          const State slow = formula.long_double_at(times[j]);
+          if (same(fast[j], slow)) continue;
+          ++differing;
+          if (!exact) exact.emplace(r.model, phase);
+          const Exact e = exact->at(times[j]);
+          ASSERT_TRUE(fast[j].x == nearest(e.x) && fast[j].v == nearest(e.v) &&
+                      fast[j].a == nearest(e.a))
+              << describe_spring(r) << " t=" << times[j];
+          // The motion's scales: velocity (forces) / (m w), and its x and a.
+          const Model& m = r.model;
+          double forces = m.amplitude + m.friction + std::fabs(m.force_offset);
+          for (const Harmonic& h : m.harmonics) forces += std::fabs(h.amplitude);
+          const double speed = forces / (m.mass * m.omega) + std::fabs(phase.v_begin);
+          const auto near = [](double value, const Fifty& exact, double scale) {
+            return std::fabs(static_cast<double>(Fifty(value) - exact)) <=
+                   1e-6 * (std::fabs(static_cast<double>(exact)) + scale);
+          };
+          ASSERT_TRUE(near(slow.x, e.x, speed / m.omega + std::fabs(phase.x_begin)) &&
+                      near(slow.v, e.v, speed) && near(slow.a, e.a, speed * m.omega))
+              << describe_spring(r) << " t=" << times[j];
+        }
+      });
+  std::cout << rows << " rows (" << refused << " models refused), " << decided
+            << " decided by the fast path; " << differing
+            << " differ from the long double path, and in all of them the fast row is the "
+               "correctly rounded one\n";
+  EXPECT_GT(rows, 200000u);
+  RecordProperty("rows", std::to_string(rows));
+  RecordProperty("differing_fast_correctly_rounded", std::to_string(differing));
+}
+
+}  // namespace
+}  // namespace frictionref
