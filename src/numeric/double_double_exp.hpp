@@ -14,13 +14,16 @@ namespace frictionref::detail::lanes {
 
 // Relative error of exp below, for an exact argument: the reduction's three
 // double-double sums (2^-104 of 0.35 each), ln 2's parts beyond ln2_3 times
-// |k| <= 1022 (2^-140), the series' twelve steps (a product within 5u^2
-// and a sum within 3.01u^2 of about 1 each: 2^-100), its tail beyond w^12/12!
-// (2^-123), the table's and the coefficients' rounding (2^-106 each) and the
-// last product (5u^2): together below 2^-99. The bound is 8 times that.
+// |k| <= 1022 (2^-140), the series' six double-double steps (a product
+// within 5u^2 and a sum within 3.01u^2 of about 1 each: 2^-101), its terms
+// from w^6 / 6! on in double (2^-104) and beyond w^12 / 12! (2^-123), the
+// table's and the coefficients' rounding (2^-106 each) and the last product
+// (5u^2): together below 2^-99. The bound is 8 times that.
 // Below e^-600 the low part loses bits to underflow: there the error is
 // below 2^-1000 absolute instead (kUnderflowSlack).
 inline constexpr double kExpError = 0x1p-96;
+// The series' terms summed in double-double: w^n / n! for n < 6.
+inline constexpr int kDoubleDoubleTerms = 6;
 
 // e^z for -708 <= z.hi <= 0 (other lanes, NaN included, are clamped into
 // that range: their answer is meaningless, but the table is never read
@@ -41,10 +44,18 @@ __attribute__((always_inline)) inline Pair exp_of(const Pair& argument,
   // d.hi - m / 64 is exact (a multiple of ulp(d.hi), below |d.hi|).
   const Lanes m = nearest_integer(d.hi * 64);
   const Pair w = fast_two_sum(d.hi - m * (1.0 / 64), d.lo);
-  Pair series{splat(t.factorial_hi[DoubleDoubleExpTable::kTerms]),
-              splat(t.factorial_lo[DoubleDoubleExpTable::kTerms])};
-  for (int n = DoubleDoubleExpTable::kTerms - 1; n >= 0; --n)
-    series = add(multiply(series, w), Pair{splat(t.factorial_hi[n]), splat(t.factorial_lo[n])});
+  // The terms from w^6 / 6! on are below 2^-51.5: summed in double (their
+  // rounding below 2^-104 in all), as tail = sum_{n >= 6} w^(n-6) / n!; the
+  // first six in double-double, Horner's steps on a short chain.
+  Lanes tail = splat(t.factorial_hi[DoubleDoubleExpTable::kTerms]);
+  for (int n = DoubleDoubleExpTable::kTerms - 1; n >= kDoubleDoubleTerms; --n)
+    tail = fused(tail, w.hi, splat(t.factorial_hi[n]));
+  const auto coefficient = [&t](int n) {
+    return Pair{splat(t.factorial_hi[n]), splat(t.factorial_lo[n])};
+  };
+  Pair series = add(coefficient(kDoubleDoubleTerms - 1), Pair{w.hi * tail, splat(0)});
+  for (int n = kDoubleDoubleTerms - 2; n >= 0; --n)
+    series = add(multiply(series, w), coefficient(n));
   const __m128i index =
       _mm_add_epi32(_mm256_cvtpd_epi32(m), _mm_set1_epi32(DoubleDoubleExpTable::kHalf));
   const Pair table{gather(t.exp_hi, index), gather(t.exp_lo, index)};
