@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "comparison/exact_motion.hpp"
+#include "dense_row_checks.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/sampling.hpp"
 #include "laws/harmonic_coulomb/double_double_slip.hpp"
@@ -28,16 +29,9 @@
 namespace frictionref {
 namespace {
 
-using Fifty = boost::multiprecision::cpp_bin_float_50;
-
-// The double nearest x (ties cannot occur at 50 digits for these values).
-double nearest(const Fifty& x) {
-  const double d = static_cast<double>(x);
-  double best = d;
-  for (double n : {std::nextafter(d, -HUGE_VAL), std::nextafter(d, HUGE_VAL)})
-    if (abs(Fifty(n) - x) < abs(Fifty(best) - x)) best = n;
-  return best;
-}
+using testing::Fifty;
+using testing::nearest;
+using testing::same_row;
 
 // The closed form of phase_law.hpp in 50 digits at exact w t and w t_a (with
 // a constant force F0, s r - f0 in place of s r).
@@ -70,13 +64,6 @@ class ExactSlip {
  private:
   Fifty w_, start_, cos_start_, sin_start_, b_, sr_, x_a_, v_a_;
 };
-
-bool same(const State& s, const State& r) {
-  // Bitwise, so that -0 and +0 or NaNs would count as different.
-  return std::memcmp(&s.x, &r.x, sizeof(double)) == 0 &&
-         std::memcmp(&s.v, &r.v, sizeof(double)) == 0 &&
-         std::memcmp(&s.a, &r.a, sizeof(double)) == 0 && s.t == r.t && s.phase == r.phase;
-}
 
 bool available() { return detail::double_double_lanes_available(); }
 
@@ -186,7 +173,7 @@ TEST(DenseFastPath, SameRowsAsTheLongDoublePathOnRandomModels) {
               phase_angle < 1 ? 0 : std::min(10, static_cast<int>(std::log10(phase_angle)) + 1);
           ++rows_by_decade[decade];
           const State slow = formula.long_double_at(times[j]);
-          if (same(fast[j], slow)) continue;
+          if (same_row(fast[j], slow)) continue;
           ++differing;
           ++differing_by_decade[decade];
           if (!exact) exact.emplace(r.model, phase);
@@ -260,7 +247,7 @@ TEST(DenseFastPath, GeneralModelWithoutSpringSameRowsAsItsLongDoublePath) {
             near_decided += near;
           }
           const State slow = formula.long_double_at(times[j]);
-          if (same(fast[j], slow)) continue;
+          if (same_row(fast[j], slow)) continue;
           ++differing;
           if (!exact) exact.emplace(m, phase);
           const Exact e = exact->at(times[j]);
@@ -313,7 +300,7 @@ TEST(DenseFastPath, SamplerRowsAreThoseOfSingleEvaluations) {
       while (row.t >= phase.t_end && phase.t_end < grid.t_end && engine.next(phase)) {
       }
       const State single = evaluate(r.model, phase, row.t);
-      ASSERT_TRUE(same(row, single)) << testing::describe(r) << " row " << count;
+      ASSERT_TRUE(same_row(row, single)) << testing::describe(r) << " row " << count;
     }
     EXPECT_GE(count, 333u);
     // sample_at evaluates its times in batches too: the grid's times (no
@@ -328,13 +315,13 @@ TEST(DenseFastPath, SamplerRowsAreThoseOfSingleEvaluations) {
     const std::vector<State> again = sample_at(r.model, times);
     ASSERT_EQ(again.size(), expected.size());
     for (std::size_t k = 0; k < again.size(); ++k)
-      ASSERT_TRUE(same(again[k], expected[k])) << testing::describe(r) << " time " << k;
+      ASSERT_TRUE(same_row(again[k], expected[k])) << testing::describe(r) << " time " << k;
     // So does compare's exact side.
     if (times.empty()) continue;
     const std::vector<State> exact = comparison::exact_motion(r.model, times).states;
     ASSERT_EQ(exact.size(), expected.size());
     for (std::size_t k = 0; k < exact.size(); ++k)
-      ASSERT_TRUE(same(exact[k], expected[k])) << testing::describe(r) << " time " << k;
+      ASSERT_TRUE(same_row(exact[k], expected[k])) << testing::describe(r) << " time " << k;
   }
 }
 

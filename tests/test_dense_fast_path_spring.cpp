@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "dense_row_checks.hpp"
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "laws/linear_oscillator/double_double_oscillator.hpp"
@@ -30,15 +31,9 @@
 namespace frictionref {
 namespace {
 
-using Fifty = boost::multiprecision::cpp_bin_float_50;
-
-double nearest(const Fifty& x) {
-  const double d = static_cast<double>(x);
-  double best = d;
-  for (double n : {std::nextafter(d, -HUGE_VAL), std::nextafter(d, HUGE_VAL)})
-    if (abs(Fifty(n) - x) < abs(Fifty(best) - x)) best = n;
-  return best;
-}
+using testing::Fifty;
+using testing::nearest;
+using testing::same_row;
 
 bool available() { return detail::double_double_lanes_available(); }
 
@@ -252,12 +247,6 @@ TEST(DoubleDoubleOscillator, DecidedValuesAreCorrectlyRounded) {
   EXPECT_GT(decided, tried / 2);
 }
 
-bool same(const State& s, const State& r) {
-  return std::memcmp(&s.x, &r.x, sizeof(double)) == 0 &&
-         std::memcmp(&s.v, &r.v, sizeof(double)) == 0 &&
-         std::memcmp(&s.a, &r.a, sizeof(double)) == 0 && s.t == r.t && s.phase == r.phase;
-}
-
 // 10^5 random spring models, three rows in each slip among the first six
 // phases: the rows of the long double path, except where they differ; there
 // the fast row is the correctly rounded 50-digit value, and the long double
@@ -283,7 +272,7 @@ TEST(DenseFastPath, SpringSameRowsAsItsLongDoublePath) {
           State only_fast;
           decided += formula.fast_at(times[j], only_fast);
           const State slow = formula.long_double_at(times[j]);
-          if (same(fast[j], slow)) continue;
+          if (same_row(fast[j], slow)) continue;
           ++differing;
           if (!exact) exact.emplace(r.model, phase);
           const Exact e = exact->at(times[j]);
@@ -295,9 +284,9 @@ TEST(DenseFastPath, SpringSameRowsAsItsLongDoublePath) {
           double forces = m.amplitude + m.friction + std::fabs(m.force_offset);
           for (const Harmonic& h : m.harmonics) forces += std::fabs(h.amplitude);
           const double speed = forces / (m.mass * m.omega) + std::fabs(phase.v_begin);
-          const auto near = [](double value, const Fifty& exact, double scale) {
-            return std::fabs(static_cast<double>(Fifty(value) - exact)) <=
-                   1e-6 * (std::fabs(static_cast<double>(exact)) + scale);
+          const auto near = [](double value, const Fifty& reference, double scale) {
+            return std::fabs(static_cast<double>(Fifty(value) - reference)) <=
+                   1e-6 * (std::fabs(static_cast<double>(reference)) + scale);
           };
           ASSERT_TRUE(near(slow.x, e.x, speed / m.omega + std::fabs(phase.x_begin)) &&
                       near(slow.v, e.v, speed) && near(slow.a, e.a, speed * m.omega))

@@ -6,6 +6,7 @@
 #include "laws/harmonic_coulomb/double_double_slip.hpp"
 
 #include "numeric/double_double_lanes.hpp"
+#include "numeric/double_double_rows.hpp"
 #include "numeric/double_double_table.hpp"
 #include "numeric/double_double_trig.hpp"
 
@@ -14,6 +15,7 @@ namespace {
 
 using lanes::Bounded;
 using lanes::exact;
+using lanes::kRange;
 using lanes::Lanes;
 using lanes::magnitude;
 using lanes::Mask;
@@ -22,9 +24,6 @@ using lanes::quotient;
 using lanes::splat;
 using lanes::Trig;
 using lanes::trig_error;
-
-// The ranges of |h| = |w t - w t_a| with bounds of their own.
-constexpr double kRange[] = {2, 8, 64, 513};
 
 // The closed form (double_double_slip.hpp), one text for the lanes' values
 // (Pair) and for the bounds on their errors (Envelope).
@@ -171,10 +170,8 @@ void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, doubl
              half_sr_over_omega = lanes_of(half_sr_over_omega_);
   const __m128i base = _mm_set1_epi32(base_index_);
   for (std::size_t i = 0; i < n; i += 4) {
-    // A short last group repeats its last time in the unused lanes.
-    const std::size_t used = n - i < 4 ? n - i : 4;
-    Lanes time;
-    for (std::size_t k = 0; k < 4; ++k) time[k] = t[i + (k < used ? k : used - 1)];
+    const std::size_t used = lanes::group_size(i, n);
+    const Lanes time = lanes::group_times(t, i, used);
     const Pair tau = lanes::two_prod(omega, time);  // w t exactly
     const Pair y = tau - base_angle;
     const Mask in_range = magnitude(y.hi) <= splat(kLargestAngle);
@@ -184,26 +181,14 @@ void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, doubl
     const Pair acceleration = acceleration_at(wb, wsr, trig.sin);
     const Pair position =
         position_at(x0, w_over_omega, half_sr_over_omega, b_over_omega, h, trig.sin);
-    // The bounds of the smallest range holding |h| (|h| <= |h.hi| (1 + 2^-50)).
-    Mask in[kRanges];
-    for (int k = 0; k < kRanges; ++k) in[k] = magnitude(h.hi) <= splat(kRange[k] * (1 - 0x1p-50));
-    const auto pick = [&](const double* bound) {
-      Lanes chosen = splat(bound[kRanges - 1]);
-      for (int k = kRanges - 2; k >= 0; --k) chosen = in[k] ? splat(bound[k]) : chosen;
-      return chosen;
-    };
+    const lanes::RangePick pick(h.hi);
     const Lanes velocity_error = pick(velocity_error_);
     const Lanes acceleration_error = pick(acceleration_error_);
     const Lanes position_error = pick(position_error_);
     const Mask ok = in_range & lanes::decided(velocity, velocity_error) &
                     lanes::decided(acceleration, acceleration_error) &
                     lanes::decided(position, position_error);
-    for (std::size_t k = 0; k < used; ++k) {
-      x[i + k] = position.hi[k];
-      v[i + k] = velocity.hi[k];
-      a[i + k] = acceleration.hi[k];
-      decided[i + k] = ok[k] != 0;
-    }
+    lanes::store_group(i, used, position, velocity, acceleration, ok, x, v, a, decided);
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include "numeric/double_double_exp.hpp"
 #include "numeric/double_double_lanes.hpp"
+#include "numeric/double_double_rows.hpp"
 #include "numeric/double_double_table.hpp"
 #include "numeric/double_double_trig.hpp"
 
@@ -15,6 +16,7 @@ namespace {
 using lanes::Bounded;
 using lanes::Envelope;
 using lanes::exact;
+using lanes::kRange;
 using lanes::Lanes;
 using lanes::magnitude;
 using lanes::Mask;
@@ -24,8 +26,6 @@ using lanes::splat;
 using lanes::Trig;
 using lanes::trig_error;
 
-// The ranges of h = w t - w t_a with bounds of their own (as the seed's).
-constexpr double kRange[] = {2, 8, 64, 513};
 constexpr double kLargestAngle = 512;  // of q_j h + offset and of nu h
 constexpr double kLargestDecay = 708;  // of sigma h: e^-708 is still normal
 
@@ -196,6 +196,7 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
   const auto envelope = [](const Constant& c) {
     return Envelope{{{splat(absolute(c.hi) + absolute(c.lo)), splat(0)}, splat(c.error)}};
   };
+  static_assert(kRanges == lanes::kRanges, "a range per lane");
   const Lanes h_max{kRange[0], kRange[1], kRange[2], kRange[3]};
   const Lanes tau_max = splat(absolute(a_hi_)) + h_max + 1;
   const Envelope h{
@@ -212,9 +213,9 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
               envelope(t.a_sin), envelope(t.a_cos), trig, trig);
   }
   const Envelope decay_argument = envelope(sigma_) * h;
-  const Envelope decay{{{splat(1 + 0x1p-40), splat(0)},
-                        (lanes::kExpError + decay_argument.bound.error) * (1 + 0x1p-6) +
-                            lanes::kUnderflowSlack}};
+  const Envelope decay{
+      {{splat(1 + 0x1p-40), splat(0)},
+       (lanes::kExpError + decay_argument.bound.error) * (1 + 0x1p-6) + lanes::kUnderflowSlack}};
   const Envelope free_trig = trig_envelope(envelope(nu_) * h);
   add_free(bound, envelope(x_cos_), envelope(x_sin_), envelope(v_cos_), envelope(v_sin_),
            envelope(a_cos_), envelope(a_sin_), decay, free_trig, free_trig);
@@ -238,10 +239,8 @@ void DoubleDoubleOscillator::evaluate(const double* t, std::size_t n, double* x,
   const Pair start{splat(a_hi_), splat(a_lo_)};
   const Pair sigma = lanes_of(sigma_), nu = lanes_of(nu_);
   for (std::size_t i = 0; i < n; i += 4) {
-    // A short last group repeats its last time in the unused lanes.
-    const std::size_t used = n - i < 4 ? n - i : 4;
-    Lanes time;
-    for (std::size_t k = 0; k < 4; ++k) time[k] = t[i + (k < used ? k : used - 1)];
+    const std::size_t used = lanes::group_size(i, n);
+    const Lanes time = lanes::group_times(t, i, used);
     const Pair tau = lanes::two_prod(omega, time);  // w t exactly
     const Pair h = tau - start;
     Mask ok = (h.hi >= splat(0)) & (h.hi <= splat(kRange[kRanges - 1] * (1 - 0x1p-50)));
@@ -263,23 +262,11 @@ void DoubleDoubleOscillator::evaluate(const double* t, std::size_t n, double* x,
     const Trig free = lanes::sin_cos(free_phase, _mm_set1_epi32(0), table);
     add_free(state, lanes_of(x_cos_), lanes_of(x_sin_), lanes_of(v_cos_), lanes_of(v_sin_),
              lanes_of(a_cos_), lanes_of(a_sin_), decay, free.cos, free.sin);
-    // The bounds of the smallest range holding h.
-    Mask in[kRanges];
-    for (int k = 0; k < kRanges; ++k) in[k] = magnitude(h.hi) <= splat(kRange[k] * (1 - 0x1p-50));
-    const auto pick = [&](const double* bound) {
-      Lanes chosen = splat(bound[kRanges - 1]);
-      for (int k = kRanges - 2; k >= 0; --k) chosen = in[k] ? splat(bound[k]) : chosen;
-      return chosen;
-    };
+    const lanes::RangePick pick(h.hi);
     ok &= lanes::decided(state.v, pick(velocity_error_)) &
           lanes::decided(state.a, pick(acceleration_error_)) &
           lanes::decided(state.x, pick(position_error_));
-    for (std::size_t k = 0; k < used; ++k) {
-      x[i + k] = state.x.hi[k];
-      v[i + k] = state.v.hi[k];
-      a[i + k] = state.a.hi[k];
-      decided[i + k] = ok[k] != 0;
-    }
+    lanes::store_group(i, used, state.x, state.v, state.a, ok, x, v, a, decided);
   }
 }
 

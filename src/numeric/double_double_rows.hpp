@@ -1,0 +1,59 @@
+// The rows of a dense fast path in groups of four lanes (docs/theory.md 10):
+// a group's times, the error bound of the smallest range of h = w t - w t_a
+// that holds each lane (one bound per range, computed once per phase), and
+// the answers stored. For the translation units compiled with -mavx2 -mfma
+// -ffp-contract=off only (double_double_slip.cpp, double_double_oscillator.cpp).
+#pragma once
+
+#include <cstddef>
+
+#include "numeric/double_double_lanes.hpp"
+
+namespace frictionref::detail::lanes {
+
+// The ranges of |h| with bounds of their own: a row takes those of the
+// smallest range that holds its own |h|, so that its answer depends on the
+// phase's start and its own time only.
+inline constexpr int kRanges = 4;
+inline constexpr double kRange[kRanges] = {2, 8, 64, 513};
+
+// How many of t[i], t[i + 1], ... (of n) the group starting at i holds.
+inline std::size_t group_size(std::size_t i, std::size_t n) { return n - i < 4 ? n - i : 4; }
+
+// The group's times; a short last group repeats its last time in the unused lanes.
+inline Lanes group_times(const double* t, std::size_t i, std::size_t used) {
+  Lanes time;
+  for (std::size_t k = 0; k < 4; ++k) time[k] = t[i + (k < used ? k : used - 1)];
+  return time;
+}
+
+// Per lane, the bound of the smallest range holding |h| (|h| <= |h.hi| (1 + 2^-50)).
+class RangePick {
+ public:
+  explicit RangePick(Lanes h_hi) {
+    for (int k = 0; k < kRanges; ++k) in_[k] = magnitude(h_hi) <= splat(kRange[k] * (1 - 0x1p-50));
+  }
+  // bound[k]: the bound of range k.
+  Lanes operator()(const double* bound) const {
+    Lanes chosen = splat(bound[kRanges - 1]);
+    for (int k = kRanges - 2; k >= 0; --k) chosen = in_[k] ? splat(bound[k]) : chosen;
+    return chosen;
+  }
+
+ private:
+  Mask in_[kRanges];
+};
+
+// The group's answers: x, v, a and whether each lane is decided.
+inline void store_group(std::size_t i, std::size_t used, const Pair& position, const Pair& velocity,
+                        const Pair& acceleration, Mask ok, double* x, double* v, double* a,
+                        unsigned char* decided) {
+  for (std::size_t k = 0; k < used; ++k) {
+    x[i + k] = position.hi[k];
+    v[i + k] = velocity.hi[k];
+    a[i + k] = acceleration.hi[k];
+    decided[i + k] = ok[k] != 0;
+  }
+}
+
+}  // namespace frictionref::detail::lanes
