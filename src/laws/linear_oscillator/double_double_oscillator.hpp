@@ -45,8 +45,8 @@ class DoubleDoubleOscillator {
   // Only where double_double_lanes_available(). Not usable() for what it
   // does not cover: no spring or an over- or critically damped one (or one
   // whose nu^2 the bounds cannot resolve), more than kMaxHarmonics
-  // harmonics, |w t_a| or a harmonic's phase at t_a beyond 2^24, parameters
-  // beyond 2^+-500, non-finite constants.
+  // harmonics, a harmonic's |phi_j| beyond 2^20, |w t_a| or a harmonic's
+  // phase at t_a beyond 2^24, parameters beyond 2^+-500, non-finite constants.
   explicit DoubleDoubleOscillator(const OscillatorSlipStart& start);
 
   bool usable() const { return usable_; }
