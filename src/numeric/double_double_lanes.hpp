@@ -24,6 +24,8 @@
 
 #include <immintrin.h>
 
+#include "numeric/double_double_constant.hpp"
+
 namespace frictionref::detail::lanes {
 
 using Lanes = double __attribute__((vector_size(32)));    // four doubles
@@ -178,6 +180,28 @@ inline Mask decided(const Pair& y, Lanes error) {
   const Lanes down = hi + (lo - margin);
   return (up == hi) & (down == hi) & (magnitude(hi) > splat(0x1p-900)) &
          (magnitude(hi) < splat(0x1p1000));
+}
+
+// Helpers of the fast paths' constructors, on plain doubles and constants.
+inline double first(Lanes x) { return x[0]; }
+inline bool finite(double x) { return x - x == 0; }
+inline double absolute(double x) { return x < 0 ? -x : x; }
+// Finite and zero or within 2^+-500: far from under- and overflow, so that
+// the quotients' residuals are exact (the engine's models are far inside).
+inline bool moderate(double x) {
+  return finite(x) && (x == 0 || (absolute(x) >= 0x1p-500 && absolute(x) <= 0x1p500));
+}
+// A constant kept from the first lane of a Bounded value, and back on all lanes.
+inline DoubleDoubleConstant keep(const Bounded& c) {
+  return {first(c.value.hi), first(c.value.lo), first(c.error)};
+}
+inline bool finite(const DoubleDoubleConstant& c) {
+  return finite(c.hi) && finite(c.lo) && finite(c.error);
+}
+inline Pair lanes_of(const DoubleDoubleConstant& c) { return {splat(c.hi), splat(c.lo)}; }
+// The envelope of a constant: its magnitude and its error.
+inline Envelope envelope(const DoubleDoubleConstant& c) {
+  return Envelope{{{splat(absolute(c.hi) + absolute(c.lo)), splat(0)}, splat(c.error)}};
 }
 
 }  // namespace frictionref::detail::lanes

@@ -102,4 +102,12 @@ __attribute__((always_inline)) inline Trig sin_cos(const Pair& y, __m128i base,
   return {two_sum(a3.hi, sin_rest), two_sum(b3.hi, cos_rest)};
 }
 
+// k pi/128 as a bounded pair, |k| < 2^30: the table angle nearest a phase
+// at a slip's start (base1 k is exact, base2 k exact as a pair).
+inline Bounded table_angle(Lanes k, const DoubleDoubleTrigTable& t) {
+  const Lanes k3 = k * t.base3;
+  return exact(k * t.base1) + exact(two_prod(k, splat(t.base2))) +
+         Bounded{{k3, splat(0)}, magnitude(k3) * 0x1p-52 + magnitude(k) * 0x1p-130};
+}
+
 }  // namespace frictionref::detail::lanes

@@ -14,11 +14,17 @@ namespace frictionref::detail {
 namespace {
 
 using lanes::Bounded;
+using lanes::envelope;
 using lanes::exact;
+using lanes::finite;
+using lanes::first;
+using lanes::keep;
 using lanes::kRange;
 using lanes::Lanes;
+using lanes::lanes_of;
 using lanes::magnitude;
 using lanes::Mask;
+using lanes::moderate;
 using lanes::Pair;
 using lanes::quotient;
 using lanes::splat;
@@ -41,9 +47,6 @@ V position_at(const V& x0, const V& w_over_omega, const V& half_sr_over_omega,
   return x0 + h * (w_over_omega - half_sr_over_omega * h) - b_over_omega * sin_tau;
 }
 
-double first(Lanes x) { return x[0]; }
-bool finite(double x) { return x - x == 0; }
-
 }  // namespace
 
 void double_double_sin_cos(double hi, double lo, double out[5]) {
@@ -62,11 +65,6 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
         finite(s.force_offset) && finite(s.t_begin) && finite(s.x_begin) && finite(s.v_begin)))
     return;
   if (!(s.omega > 0 && s.mass > 0 && (s.sign == 1 || s.sign == -1))) return;
-  // Magnitudes far from under- and overflow, so that the quotients' residuals
-  // are exact (the engine's models are far inside).
-  const auto moderate = [](double z) {
-    return z == 0 || (__builtin_fabs(z) >= 0x1p-500 && __builtin_fabs(z) <= 0x1p500);
-  };
   if (!(moderate(s.omega) && moderate(s.mass) && moderate(s.amplitude) && moderate(s.friction) &&
         moderate(s.force_offset) && moderate(s.omega * s.mass)))
     return;
@@ -76,10 +74,7 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
   if (!(__builtin_fabs(first(a.hi)) <= 0x1p24)) return;
   // j_a pi/128 nearest w t_a (|j_a| < 2^30), to 2^-79 for |w t_a| <= 2^24.
   const Lanes j = lanes::nearest_integer(a.hi * table.steps_per_radian);
-  const Lanes j3 = j * table.base3;
-  const Bounded base_angle =
-      exact(j * table.base1) + exact(lanes::two_prod(j, splat(table.base2))) +
-      Bounded{{j3, splat(0)}, magnitude(j3) * 0x1p-52 + magnitude(j) * 0x1p-130};
+  const Bounded base_angle = lanes::table_angle(j, table);
   const long long j_a = static_cast<long long>(first(j));
   base_index_ = static_cast<int>(j_a & (DoubleDoubleTrigTable::kSize - 1));
 
@@ -99,9 +94,6 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
   const Bounded moving = exact(splat(s.v_begin)) + b * start_cos;  // v_a + b cos a
   const Bounded b_over_omega = b * inverse_omega;
 
-  const auto keep = [](const Bounded& c) {
-    return Constant{first(c.value.hi), first(c.value.lo), first(c.error)};
-  };
   base_angle_ = keep(base_angle);
   v0_ = keep(moving + sr * angle);
   b_ = keep(b);
@@ -119,17 +111,13 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
       &base_angle_,        &v0_, &b_, &sr_, &wb_, &wsr_, &x0_, &w_over_omega_, &b_over_omega_,
       &half_sr_over_omega_};
   for (const Constant* c : all)
-    if (!(finite(c->hi) && finite(c->lo) && finite(c->error))) return;
+    if (!finite(*c)) return;
 
   // Bounds on the errors of x, v and a for |h| up to 2, 8, 64 and 513 rad (one
   // range per lane), from the closed form on envelopes of its operands:
   // |tau| <= |w t_a| + h_max, |y| = |tau - j_a pi/128| <= h_max + pi/256. A
   // time takes the bounds of the smallest range that holds its own h, so its
   // answer depends on nothing else.
-  const auto envelope = [](const Constant& c) {
-    return lanes::Envelope{
-        {{splat(__builtin_fabs(c.hi) + __builtin_fabs(c.lo)), splat(0)}, splat(c.error)}};
-  };
   static_assert(sizeof kRange / sizeof kRange[0] == kRanges && kRanges == 4, "a range per lane");
   const Lanes h_max{kRange[0], kRange[1], kRange[2], kRange[3]};
   const Lanes tau_max = splat(__builtin_fabs(a_hi_)) + h_max + 1;
@@ -161,7 +149,6 @@ DoubleDoubleSlip::DoubleDoubleSlip(const SeedSlipStart& s) {
 void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
                                 unsigned char* decided) const {
   const DoubleDoubleTrigTable& table = double_double_trig_table();
-  const auto lanes_of = [](const Constant& c) { return Pair{splat(c.hi), splat(c.lo)}; };
   const Lanes omega = splat(omega_);
   const Pair angle{splat(a_hi_), splat(a_lo_)};
   const Pair base_angle = lanes_of(base_angle_), v0 = lanes_of(v0_), b = lanes_of(b_),

@@ -18,6 +18,7 @@
 
 #include <cstddef>
 
+#include "numeric/double_double_constant.hpp"
 #include "numeric/double_double_table.hpp"
 
 namespace frictionref::detail {
@@ -53,10 +54,7 @@ class DoubleDoubleSlip {
                 unsigned char* decided) const;
 
  private:
-  // A double-double constant and its error bound.
-  struct Constant {
-    double hi = 0, lo = 0, error = 0;
-  };
+  using Constant = DoubleDoubleConstant;
 
   bool usable_ = false;
   double omega_ = 0;
