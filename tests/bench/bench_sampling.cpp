@@ -14,6 +14,7 @@
 #include "frictionref/sampling.hpp"
 #include "general_models.hpp"
 #include "laws/harmonic_coulomb/phase_formula.hpp"
+#include "laws/linear_oscillator/phase_formula.hpp"
 
 namespace frictionref::bench {
 namespace {
@@ -51,12 +52,14 @@ void for_each_phase_rows(const Model& model, const GridOptions& grid, Visit visi
   }
 }
 
-// The share of slip rows the fast path leaves to long double.
+// The share of slip rows the fast path leaves to long double (Formula: the
+// seed's or the general model's phase formula).
+template <class Formula>
 double fallback_share(const Model& model, const GridOptions& grid) {
   std::uint64_t slip_rows = 0, fallbacks = 0;
   for_each_phase_rows(model, grid, [&](const Phase& phase, const std::vector<double>& times) {
     if (phase.kind == PhaseKind::stick) return;
-    const detail::HarmonicCoulombFormula<double> formula(model, phase);
+    const Formula formula(model, phase);
     for (double t : times) {
       State state;
       ++slip_rows;
@@ -84,15 +87,19 @@ void sample_all(benchmark::State& state, const Model& model) {
 void BM_DenseSamples(benchmark::State& state) {
   const Model model = dense_model(state.range(0));
   sample_all(state, model);
-  state.counters["fallback_share"] = fallback_share(model, dense_grid());
+  state.counters["fallback_share"] =
+      fallback_share<detail::HarmonicCoulombFormula<double>>(model, dense_grid());
 }
 BENCHMARK(BM_DenseSamples)->Arg(30)->Arg(70)->Unit(benchmark::kMillisecond);
 
 // The general model's cases (general_models.hpp) on the same grid.
 void BM_GeneralDenseSamples(benchmark::State& state) {
-  sample_all(state, general_model(state.range(0)));
+  const Model model = general_model(state.range(0));
+  sample_all(state, model);
+  state.counters["fallback_share"] =
+      fallback_share<detail::LinearOscillatorFormula<double>>(model, dense_grid());
 }
-BENCHMARK(BM_GeneralDenseSamples)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GeneralDenseSamples)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
 
 // The formula alone over the same rows: /L/1 the fast path with its fallback
 // (at_many, as the sampler calls it), /L/0 the long double path for every

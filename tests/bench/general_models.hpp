@@ -3,7 +3,9 @@
 //   0: the seed's model at lambda 0.7 run through the general laws (static
 //      friction set a rounding above R, so that the general family is used);
 //   1: static 0.6 > sliding 0.4 friction, k = 1, c = 0.1;
-//   2: k = 1, c = 0.05, lambda 0.3, a second harmonic 0.4 sin(2.5 t + 0.3).
+//   2: k = 1, c = 0.05, lambda 0.3, a second harmonic 0.4 sin(2.5 t + 0.3);
+//   3: case 2 without spring or damper (the seed's block, lambda 0.3, with
+//      the second harmonic).
 #pragma once
 
 #include <cmath>
@@ -26,10 +28,14 @@ inline Model general_model(std::int64_t which) {
       m.stiffness = 1;
       m.damping = 0.1;
       break;
-    default:
+    case 2:
       m.friction = 0.3;
       m.stiffness = 1;
       m.damping = 0.05;
+      m.harmonics.push_back({0.4, 2.5, 0.3});
+      break;
+    default:
+      m.friction = 0.3;
       m.harmonics.push_back({0.4, 2.5, 0.3});
       break;
   }

@@ -106,7 +106,7 @@ print(f"- one std::cos call: {cos_ns:.2f} ns\n")
 # same regime, in the same run (case 0 is the seed's model at lambda 0.7; cases
 # 1 and 2 slide continuously, as the seed's does at lambda 0.3).
 seed_of_general = {"BM_GeneralEvents/0": "BM_Events/70", "BM_GeneralEvents/1": "BM_Events/30",
-                   "BM_GeneralEvents/2": "BM_Events/30"}
+                   "BM_GeneralEvents/2": "BM_Events/30", "BM_GeneralEvents/3": "BM_Events/30"}
 units_of = {b["run_name"]: 1e9 / b["items_per_second"] / cos_ns for b in rows}
 print("| benchmark | what | items per second | ns per item | cos calls per item | target |")
 print("|---|---|---:|---:|---:|---:|")
@@ -146,9 +146,11 @@ counterparts = [
     ("BM_GeneralEvents/0", "BM_Events/70", "event"),
     ("BM_GeneralEvents/1", "BM_Events/30", "event"),
     ("BM_GeneralEvents/2", "BM_Events/30", "event"),
+    ("BM_GeneralEvents/3", "BM_Events/30", "event"),
     ("BM_GeneralDenseSamples/0", "BM_DenseSamples/70", "dense sample"),
     ("BM_GeneralDenseSamples/1", "BM_DenseSamples/30", "dense sample"),
     ("BM_GeneralDenseSamples/2", "BM_DenseSamples/30", "dense sample"),
+    ("BM_GeneralDenseSamples/3", "BM_DenseSamples/30", "dense sample"),
     ("BM_GeneralRecordSamples", "BM_RecordSamples/one_way:0", "record sample"),
     ("BM_RecordSamples/one_way:1", "BM_DenseSamples/30", "record sample against a dense sample"),
     ("BM_RecordSamples/one_way:0", "BM_DenseSamples/30", "record sample against a dense sample"),
@@ -169,6 +171,12 @@ if dense:
     print("Slip rows the dense fast path leaves to long double (`fallback_share`): " +
           ", ".join(f"lambda {int(b['run_name'].split('/')[1]) / 100:g}: {100 * b['fallback_share']:.2f} %"
                     for b in dense) + ".\n")
+general_dense = [b for b in rows
+                 if b["run_name"].startswith("BM_GeneralDenseSamples/") and "fallback_share" in b]
+if general_dense:
+    print("The general model's dense samples (cases of `tests/bench/general_models.hpp`): " +
+          ", ".join(f"case {b['run_name'].split('/')[1]}: {100 * b['fallback_share']:.3f} %"
+                    for b in general_dense) + " of slip rows left to long double.\n")
 events = [b for b in rows if b["run_name"].startswith("BM_Events")]
 if events:
     print("Root-function evaluations (one sin_cos each) and sign tests per event in the same runs:\n")
