@@ -1,11 +1,12 @@
-// The general model's dense fast path for an underdamped spring
-// (double_double_oscillator.hpp, docs/theory.md 10.6) against an independent
-// 50-digit evaluation of the closed form (the textbook split into the steady
-// response and a damped free oscillation, with Boost's exp, sin and cos at
-// exact arguments; the long double path uses divided differences and
-// transition functions instead), and against the long double path it
-// short-cuts: the same rows, except where the long double row is not the
-// correctly rounded one and the fast row is.
+// The general model's dense fast path for an underdamped spring, and for
+// harmonics without spring or damper (double_double_oscillator.hpp,
+// docs/theory.md 10.6), against an independent 50-digit evaluation of the
+// closed form (the textbook split into the steady response and a damped free
+// oscillation or a parabola, with Boost's exp, sin and cos at exact
+// arguments; the long double path uses divided differences and transition
+// functions instead), and against the long double path it short-cuts: the
+// same rows, except where the long double row is not the correctly rounded
+// one and the fast row is.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,19 +39,23 @@ using testing::same_row;
 bool available() { return detail::double_double_lanes_available(); }
 
 // The slip's closed form in 50 digits (docs/theory.md 10.6), from the
-// phase's double start at exact w t, w t_a.
+// phase's double start at exact w t, w t_a: with a spring, the damped free
+// oscillation; with neither spring nor damper, C1 + D1 h + g0 h^2 / 2.
 struct Exact {
   Fifty x, v, a;
 };
 class ExactSpringSlip {
  public:
-  ExactSpringSlip(const Model& m, const Phase& p) : w_(m.omega), a_(w_ * Fifty(p.t_begin)) {
+  ExactSpringSlip(const Model& m, const Phase& p)
+      : w_(m.omega), a_(w_ * Fifty(p.t_begin)), spring_(m.stiffness > 0) {
     const Fifty mw = Fifty(m.mass) * w_;
     sigma_ = Fifty(m.damping) / (2 * mw);
     const Fifty rho2 = Fifty(m.stiffness) / (mw * w_);
-    nu_ = sqrt(rho2 - sigma_ * sigma_);
-    const Fifty g0 = (Fifty(m.force_offset) - slip_sign(p.kind) * Fifty(m.friction)) / mw;
-    steady_ = g0 / rho2;
+    g0_ = (Fifty(m.force_offset) - slip_sign(p.kind) * Fifty(m.friction)) / mw;
+    if (spring_) {
+      nu_ = sqrt(rho2 - sigma_ * sigma_);
+      steady_ = g0_ / rho2;
+    }
     terms_.push_back({Fifty(m.amplitude) / mw, Fifty(1), Fifty(0)});
     for (const Harmonic& h : m.harmonics)
       terms_.push_back({Fifty(h.amplitude) / mw, Fifty(h.omega) / w_, Fifty(h.phase)});
@@ -64,13 +69,15 @@ class ExactSpringSlip {
     const Particular at_start = particular(a_);
     c1_ = w_ * Fifty(p.x_begin) - at_start.y;
     d1_ = Fifty(p.v_begin) - at_start.v;
-    c2_ = (d1_ + sigma_ * c1_) / nu_;
+    if (spring_) c2_ = (d1_ + sigma_ * c1_) / nu_;
   }
 
   Exact at(double t) const {
     const Fifty tau = w_ * Fifty(t);
     const Fifty h = tau - a_;
     const Particular p = particular(tau);
+    if (!spring_)
+      return {(p.y + c1_ + h * (d1_ + g0_ * h / 2)) / w_, p.v + d1_ + g0_ * h, w_ * (p.dv + g0_)};
     const Fifty e = exp(-sigma_ * h), c = cos(nu_ * h), s = sin(nu_ * h);
     // y_h = e (C1 c + C2 s) and its two derivatives.
     const Fifty d2 = -(nu_ * c1_ + sigma_ * c2_);
@@ -99,34 +106,46 @@ class ExactSpringSlip {
     }
     return p;
   }
-  Fifty w_, a_, sigma_, nu_, steady_, c1_, d1_, c2_;
+  Fifty w_, a_;
+  bool spring_;
+  Fifty sigma_, g0_, nu_, steady_ = 0, c1_, d1_, c2_;
   std::vector<Term> terms_;
 };
 
-// Random underdamped spring models from the seed's stream: natural frequency
-// w 10^u (u uniform on [-1, 1]), damping ratio 0 (a tenth) or log-uniform on
+// Random models from the seed's stream. Springs: natural frequency w 10^u
+// (u uniform on [-1, 1]), damping ratio 0 (a tenth) or log-uniform on
 // [1e-4, 0.95], and a tenth overdamped (ratio 1 to 4: the fast path stands
-// aside); Rs = R (1 + 10^u), u on [-15, 0]; F0 = 0 (a half) or +-(B + R) 10^u,
-// u on [-4, 0]; up to two harmonics B U(0, 1) sin(w 10^u t + phi), u on
-// [-1, 1], phi uniform on [-pi, pi].
+// aside); up to two harmonics. Harmonics alone: no spring or damper, one to
+// three harmonics (with none the seed's fast path takes the slip), and a
+// tenth with a damper (the fast path stands aside). Both: Rs = R (1 + 10^u),
+// u on [-15, 0]; F0 = 0 (a half) or +-(B + R) 10^u, u on [-4, 0]; each
+// harmonic B U(0, 1) sin(w 10^u t + phi), u on [-1, 1], phi uniform on
+// [-pi, pi].
+enum class Family { spring, harmonics_alone };
 class SpringModels {
  public:
-  explicit SpringModels(std::uint64_t seed) : stream_(seed), random_(seed + 1) {}
+  explicit SpringModels(std::uint64_t seed, Family family = Family::spring)
+      : stream_(seed), random_(seed + 1), family_(family) {}
   testing::RandomModel next() {
     testing::RandomModel r = stream_.next();
     Model& m = r.model;
-    const double natural = m.omega * std::pow(10.0, uniform(-1, 1));
-    const double pick = unit();
-    const double ratio = pick < 0.1   ? 0.0
-                         : pick < 0.2 ? uniform(1, 4)
-                                      : std::pow(10.0, uniform(-4, std::log10(0.95)));
-    m.stiffness = m.mass * natural * natural;
-    m.damping = 2 * ratio * m.mass * natural;
+    if (family_ == Family::spring) {
+      const double natural = m.omega * std::pow(10.0, uniform(-1, 1));
+      const double pick = unit();
+      const double ratio = pick < 0.1   ? 0.0
+                           : pick < 0.2 ? uniform(1, 4)
+                                        : std::pow(10.0, uniform(-4, std::log10(0.95)));
+      m.stiffness = m.mass * natural * natural;
+      m.damping = 2 * ratio * m.mass * natural;
+    } else if (unit() < 0.1) {
+      m.damping = m.mass * m.omega * std::pow(10.0, uniform(-3, 0));
+    }
     m.static_friction = m.friction * (1 + std::pow(10.0, uniform(-15, 0)));
     m.force_offset = unit() < 0.5 ? 0.0
                                   : (unit() < 0.5 ? 1 : -1) * (m.amplitude + m.friction) *
                                         std::pow(10.0, uniform(-4, 0));
-    const int harmonics = static_cast<int>(unit() * 3);
+    const int harmonics =
+        family_ == Family::spring ? static_cast<int>(unit() * 3) : 1 + static_cast<int>(unit() * 3);
     for (int j = 0; j < harmonics; ++j)
       m.harmonics.push_back({m.amplitude * unit(), m.omega * std::pow(10.0, uniform(-1, 1)),
                              uniform(-3.141592653589793, 3.141592653589793)});
@@ -138,13 +157,15 @@ class SpringModels {
   double uniform(double a, double b) { return a + (b - a) * unit(); }
   testing::ModelStream stream_;
   std::mt19937_64 random_;
+  Family family_;
 };
 
 // Each slip among the first six phases of `count` random spring models, with
 // its formula; models the engine refuses are counted.
 template <class Visit>
-std::uint64_t for_each_spring_slip(std::uint64_t seed, int count, Visit visit) {
-  SpringModels models(seed);
+std::uint64_t for_each_spring_slip(std::uint64_t seed, int count, Visit visit,
+                                   Family family = Family::spring) {
+  SpringModels models(seed, family);
   std::uint64_t refused = 0;
   for (int i = 0; i < count && !::testing::Test::HasFatalFailure(); ++i) {
     const testing::RandomModel r = models.next();
@@ -216,90 +237,109 @@ TEST(DoubleDoubleExp, WithinItsBoundOfFiftyDigits) {
 }
 
 // Every value the fast path decides, at times spread over each slip and
-// crowded towards its stop, is the correctly rounded 50-digit value.
-TEST(DoubleDoubleOscillator, DecidedValuesAreCorrectlyRounded) {
-  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+// crowded towards its stop, is the correctly rounded 50-digit value; a
+// damper without a spring is never decided (the path stands aside).
+void decided_values_are_correctly_rounded(Family family) {
   std::mt19937_64 random(7);
   const auto unit = [&] { return std::ldexp(static_cast<double>(random() >> 11), -53); };
   std::uint64_t tried = 0, decided = 0;
-  for_each_spring_slip(11, 3000,
-                       [&](const testing::RandomModel& r, const Phase& phase,
-                           const detail::LinearOscillatorFormula<double>& formula) {
-                         std::optional<ExactSpringSlip> exact;
-                         for (int j = 0; j < 8; ++j) {
-                           const double fraction =
-                               j < 4 ? unit() : 1 - std::pow(10.0, -12 * unit());
-                           const double t = phase.t_begin + fraction * phase.duration();
-                           if (!(t > phase.t_begin && t < phase.t_end)) continue;
-                           ++tried;
-                           State fast;
-                           if (!formula.fast_at(t, fast)) continue;
-                           ++decided;
-                           if (!exact) exact.emplace(r.model, phase);
-                           const Exact e = exact->at(t);
-                           ASSERT_EQ(fast.x, nearest(e.x)) << describe_spring(r) << " t=" << t;
-                           ASSERT_EQ(fast.v, nearest(e.v)) << describe_spring(r) << " t=" << t;
-                           ASSERT_EQ(fast.a, nearest(e.a)) << describe_spring(r) << " t=" << t;
-                         }
-                       });
+  const auto visit = [&](const testing::RandomModel& r, const Phase& phase,
+                         const detail::LinearOscillatorFormula<double>& formula) {
+    std::optional<ExactSpringSlip> exact;
+    for (int j = 0; j < 8; ++j) {
+      const double fraction = j < 4 ? unit() : 1 - std::pow(10.0, -12 * unit());
+      const double t = phase.t_begin + fraction * phase.duration();
+      if (!(t > phase.t_begin && t < phase.t_end)) continue;
+      ++tried;
+      State fast;
+      if (!formula.fast_at(t, fast)) continue;
+      ++decided;
+      ASSERT_FALSE(r.model.stiffness == 0 && r.model.damping > 0) << describe_spring(r);
+      if (!exact) exact.emplace(r.model, phase);
+      const Exact e = exact->at(t);
+      ASSERT_EQ(fast.x, nearest(e.x)) << describe_spring(r) << " t=" << t;
+      ASSERT_EQ(fast.v, nearest(e.v)) << describe_spring(r) << " t=" << t;
+      ASSERT_EQ(fast.a, nearest(e.a)) << describe_spring(r) << " t=" << t;
+    }
+  };
+  for_each_spring_slip(11, 3000, visit, family);
   std::cout << decided << " of " << tried << " states decided by the fast path\n";
   EXPECT_GT(tried, 10000u);
   EXPECT_GT(decided, tried / 2);
 }
 
-// 10^5 random spring models, three rows in each slip among the first six
-// phases: the rows of the long double path, except where they differ; there
-// the fast row is the correctly rounded 50-digit value, and the long double
-// row is within 1e-6 of the motion's scale of it (rounding, not a different
-// formula).
-TEST(DenseFastPath, SpringSameRowsAsItsLongDoublePath) {
+TEST(DoubleDoubleOscillator, DecidedValuesAreCorrectlyRounded) {
   if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  decided_values_are_correctly_rounded(Family::spring);
+}
+
+TEST(DoubleDoubleOscillator, HarmonicsAloneDecidedValuesAreCorrectlyRounded) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  decided_values_are_correctly_rounded(Family::harmonics_alone);
+}
+
+// `count` random models, three rows in each slip among the first six phases:
+// the rows of the long double path, except where they differ; there the fast
+// row is the correctly rounded 50-digit value, and the long double row is
+// within 1e-6 of the motion's scale of it (rounding, not a different
+// formula).
+void same_rows_as_the_long_double_path(Family family, std::uint64_t seed, int count,
+                                       std::uint64_t least_rows) {
   std::uint64_t rows = 0, decided = 0, differing = 0;
-  const std::uint64_t refused = for_each_spring_slip(
-      2028, 100000,
-      [&](const testing::RandomModel& r, const Phase& phase,
-          const detail::LinearOscillatorFormula<double>& formula) {
-        constexpr int kTimes = 3;
-        double times[kTimes];
-        for (int j = 0; j < kTimes; ++j)
-          times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
-        State fast[kTimes];
-        formula.at_many(times, kTimes, fast);
-        std::optional<ExactSpringSlip> exact;
-        for (int j = 0; j < kTimes; ++j) {
-          if (!(times[j] > phase.t_begin && times[j] < phase.t_end)) continue;
-          ++rows;
-          State only_fast;
-          decided += formula.fast_at(times[j], only_fast);
-          const State slow = formula.long_double_at(times[j]);
-          if (same_row(fast[j], slow)) continue;
-          ++differing;
-          if (!exact) exact.emplace(r.model, phase);
-          const Exact e = exact->at(times[j]);
-          ASSERT_TRUE(fast[j].x == nearest(e.x) && fast[j].v == nearest(e.v) &&
-                      fast[j].a == nearest(e.a))
-              << describe_spring(r) << " t=" << times[j];
-          // The motion's scales: velocity (forces) / (m w), and its x and a.
-          const Model& m = r.model;
-          double forces = m.amplitude + m.friction + std::fabs(m.force_offset);
-          for (const Harmonic& h : m.harmonics) forces += std::fabs(h.amplitude);
-          const double speed = forces / (m.mass * m.omega) + std::fabs(phase.v_begin);
-          const auto near = [](double value, const Fifty& reference, double scale) {
-            return std::fabs(static_cast<double>(Fifty(value) - reference)) <=
-                   1e-6 * (std::fabs(static_cast<double>(reference)) + scale);
-          };
-          ASSERT_TRUE(near(slow.x, e.x, speed / m.omega + std::fabs(phase.x_begin)) &&
-                      near(slow.v, e.v, speed) && near(slow.a, e.a, speed * m.omega))
-              << describe_spring(r) << " t=" << times[j];
-        }
-      });
+  const auto visit = [&](const testing::RandomModel& r, const Phase& phase,
+                         const detail::LinearOscillatorFormula<double>& formula) {
+    constexpr int kTimes = 3;
+    double times[kTimes];
+    for (int j = 0; j < kTimes; ++j)
+      times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
+    State fast[kTimes];
+    formula.at_many(times, kTimes, fast);
+    std::optional<ExactSpringSlip> exact;
+    for (int j = 0; j < kTimes; ++j) {
+      if (!(times[j] > phase.t_begin && times[j] < phase.t_end)) continue;
+      ++rows;
+      State only_fast;
+      decided += formula.fast_at(times[j], only_fast);
+      const State slow = formula.long_double_at(times[j]);
+      if (same_row(fast[j], slow)) continue;
+      ++differing;
+      if (!exact) exact.emplace(r.model, phase);
+      const Exact e = exact->at(times[j]);
+      ASSERT_TRUE(fast[j].x == nearest(e.x) && fast[j].v == nearest(e.v) &&
+                  fast[j].a == nearest(e.a))
+          << describe_spring(r) << " t=" << times[j];
+      // The motion's scales: velocity (forces) / (m w), and its x and a.
+      const Model& m = r.model;
+      double forces = m.amplitude + m.friction + std::fabs(m.force_offset);
+      for (const Harmonic& h : m.harmonics) forces += std::fabs(h.amplitude);
+      const double speed = forces / (m.mass * m.omega) + std::fabs(phase.v_begin);
+      const auto near = [](double value, const Fifty& reference, double scale) {
+        return std::fabs(static_cast<double>(Fifty(value) - reference)) <=
+               1e-6 * (std::fabs(static_cast<double>(reference)) + scale);
+      };
+      ASSERT_TRUE(near(slow.x, e.x, speed / m.omega + std::fabs(phase.x_begin)) &&
+                  near(slow.v, e.v, speed) && near(slow.a, e.a, speed * m.omega))
+          << describe_spring(r) << " t=" << times[j];
+    }
+  };
+  const std::uint64_t refused = for_each_spring_slip(seed, count, visit, family);
   std::cout << rows << " rows (" << refused << " models refused), " << decided
             << " decided by the fast path; " << differing
             << " differ from the long double path, and in all of them the fast row is the "
                "correctly rounded one\n";
-  EXPECT_GT(rows, 200000u);
-  RecordProperty("rows", std::to_string(rows));
-  RecordProperty("differing_fast_correctly_rounded", std::to_string(differing));
+  EXPECT_GT(rows, least_rows);
+  ::testing::Test::RecordProperty("rows", std::to_string(rows));
+  ::testing::Test::RecordProperty("differing_fast_correctly_rounded", std::to_string(differing));
+}
+
+TEST(DenseFastPath, SpringSameRowsAsItsLongDoublePath) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  same_rows_as_the_long_double_path(Family::spring, 2028, 100000, 200000);
+}
+
+TEST(DenseFastPath, HarmonicsAloneSameRowsAsTheirLongDoublePath) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  same_rows_as_the_long_double_path(Family::harmonics_alone, 2029, 100000, 200000);
 }
 
 }  // namespace

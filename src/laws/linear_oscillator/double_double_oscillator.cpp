@@ -13,25 +13,29 @@
 namespace frictionref::detail {
 namespace {
 
+using lanes::absolute;
 using lanes::Bounded;
+using lanes::envelope;
 using lanes::Envelope;
 using lanes::exact;
+using lanes::finite;
+using lanes::first;
+using lanes::keep;
 using lanes::kRange;
 using lanes::Lanes;
+using lanes::lanes_of;
 using lanes::magnitude;
 using lanes::Mask;
+using lanes::moderate;
 using lanes::Pair;
 using lanes::quotient;
 using lanes::splat;
+using lanes::table_angle;
 using lanes::Trig;
 using lanes::trig_error;
 
 constexpr double kLargestAngle = 512;  // of q_j h + offset and of nu h
 constexpr double kLargestDecay = 708;  // of sigma h: e^-708 is still normal
-
-double first(Lanes x) { return x[0]; }
-bool finite(double x) { return x - x == 0; }
-double absolute(double x) { return x < 0 ? -x : x; }
 
 // The closed form (double_double_oscillator.hpp), one text for the lanes'
 // values (Pair) and for the bounds on their errors (Envelope).
@@ -59,11 +63,12 @@ void add_free(State<V>& s, const V& x_cos, const V& x_sin, const V& v_cos, const
   s.a = s.a + decay * (a_cos * cosine + a_sin * sine);
 }
 
-// k pi/128 as a bounded pair, |k| < 2^30 (as the seed's start angle).
-Bounded table_angle(Lanes k, const DoubleDoubleTrigTable& table) {
-  const Lanes k3 = k * table.base3;
-  return exact(k * table.base1) + exact(lanes::two_prod(k, splat(table.base2))) +
-         Bounded{{k3, splat(0)}, magnitude(k3) * 0x1p-52 + magnitude(k) * 0x1p-130};
+// The uniformly accelerated motion of a slip without spring or damper:
+// x = x0 + h (x1 + x2 h), v = v0 + v1 h, a = a0.
+template <class V>
+State<V> parabola(const V& x0, const V& x1, const V& x2, const V& v0, const V& v1, const V& a0,
+                  const V& h) {
+  return {x0 + h * (x1 + x2 * h), v0 + v1 * h, a0};
 }
 
 }  // namespace
@@ -76,21 +81,21 @@ void double_double_exp(double hi, double lo, double out[3]) {
 }
 
 DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
-  const auto moderate = [](double z) {
-    return finite(z) && (z == 0 || (absolute(z) >= 0x1p-500 && absolute(z) <= 0x1p500));
-  };
   if (!(moderate(s.omega) && moderate(s.amplitude) && moderate(s.mass) && moderate(s.friction) &&
         moderate(s.stiffness) && moderate(s.damping) && moderate(s.force_offset) &&
         moderate(s.omega * s.mass) && finite(s.t_begin) && finite(s.x_begin) && finite(s.v_begin)))
     return;
-  if (!(s.omega > 0 && s.mass > 0 && s.stiffness > 0 && s.damping >= 0 &&
+  if (!(s.omega > 0 && s.mass > 0 && s.stiffness >= 0 && s.damping >= 0 &&
         (s.sign == 1 || s.sign == -1) && s.harmonics >= 0 &&
         s.harmonics <= OscillatorSlipStart::kMaxHarmonics))
     return;
+  // A damper without a spring (its free motion a decay towards a drift) is
+  // left to the long double path.
+  if (s.stiffness == 0 && s.damping != 0) return;
+  oscillation_ = s.stiffness > 0;
   for (int j = 0; j < s.harmonics; ++j)
     if (!(moderate(s.harmonic_amplitude[j]) && moderate(s.harmonic_omega[j]) &&
-          s.harmonic_omega[j] > 0 && finite(s.harmonic_phase[j]) &&
-          absolute(s.harmonic_phase[j]) <= 0x1p20))
+          s.harmonic_omega[j] > 0 && absolute(s.harmonic_phase[j]) <= 0x1p20))
       return;
   const DoubleDoubleTrigTable& table = double_double_trig_table();
   const Lanes omega = splat(s.omega);
@@ -99,22 +104,24 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
 
   const Pair mass_omega = lanes::two_prod(splat(s.mass), omega);
   const Bounded mass_omega2 = exact(mass_omega) * exact(omega);
-  const Bounded rho2 = exact(splat(s.stiffness)) / mass_omega2;
+  const Bounded rho2 = exact(splat(s.stiffness)) / mass_omega2;  // 0 without a spring
   const Bounded sigma = lanes::scaled(quotient(s.damping, mass_omega), 0.5);
-  const Bounded nu2 = rho2 - sigma * sigma;
-  // Underdamped, resolvably: otherwise the long double path alone.
-  if (!(first(nu2.value.hi) > 4 * first(nu2.error))) return;
-  const Bounded nu = lanes::square_root(nu2);
   const Bounded inverse_omega = quotient(1.0, Pair{omega, splat(0)});
   const Bounded omega_b = exact(omega);
   const Bounded r = quotient(s.friction, mass_omega);
   const Bounded sr = s.sign > 0 ? r : -r;
   const Bounded g0 = s.force_offset == 0 ? -sr : quotient(s.force_offset, mass_omega) - sr;
-  const Bounded steady = g0 / rho2;  // P
+  // The spring's steady response to g0, P = g0 / rho^2; none without a spring
+  // (g0 accelerates the free motion instead).
+  const Bounded steady = oscillation_ ? g0 / rho2 : exact(splat(0));
+  Bounded nu = exact(splat(0));
+  if (oscillation_) {
+    const Bounded nu2 = rho2 - sigma * sigma;
+    // Underdamped, resolvably: otherwise the long double path alone.
+    if (!(first(nu2.value.hi) > 4 * first(nu2.error))) return;
+    nu = lanes::square_root(nu2);
+  }
 
-  const auto keep = [](const Bounded& c) {
-    return Constant{first(c.value.hi), first(c.value.lo), first(c.error)};
-  };
   // The forcing terms: the particular solution and its slope at h = 0.
   Bounded y_p = steady, v_p = exact(splat(0));
   terms_ = 1 + s.harmonics;
@@ -135,7 +142,8 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
     const Bounded sine{at_start.sin, trig_error_at_start};
     const Bounded cosine{at_start.cos, trig_error_at_start};
     // H = (rho^2 - q^2 - 2 i sigma q) / D, D = (rho^2 - q^2)^2 + (2 sigma q)^2;
-    // the term b Im(H e^{i theta}) = A sin theta + C cos theta.
+    // the term b Im(H e^{i theta}) = A sin theta + C cos theta. Without a
+    // spring or damper, H = -1 / q^2 (D = q^4 > 0).
     const Bounded detuning = rho2 - q * q;
     const Bounded friction_part = lanes::scaled(sigma * q, 2);
     const Bounded denominator = detuning * detuning + friction_part * friction_part;
@@ -154,38 +162,50 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
     term.a_cos = keep(-(omega_b * q2 * coefficient_cos));
   }
 
-  // The free oscillation from the rest of the start: y_h(0) = C1, y_h'(0) = D1.
+  // The free motion from the rest of the start: y_h(0) = C1, y_h'(0) = D1.
   const Bounded c1 = exact(lanes::two_prod(omega, splat(s.x_begin))) - y_p;
   const Bounded d1 = exact(splat(s.v_begin)) - v_p;
-  const Bounded c2 = (d1 + sigma * c1) / nu;
-  const Bounded d2 = -(nu * c1 + sigma * c2);
-  const Bounded e1 = nu * d2 - sigma * d1;
-  const Bounded e2 = -(nu * d1 + sigma * d2);
-  sigma_ = keep(sigma);
-  nu_ = keep(nu);
-  x_steady_ = keep(steady * inverse_omega);
-  x_cos_ = keep(c1 * inverse_omega);
-  x_sin_ = keep(c2 * inverse_omega);
-  v_cos_ = keep(d1);
-  v_sin_ = keep(d2);
-  a_cos_ = keep(omega_b * e1);
-  a_sin_ = keep(omega_b * e2);
+  const Bounded zero = exact(splat(0));
+  if (oscillation_) {
+    // e^{-sigma h} (C1 cos nu h + C2 sin nu h) and its derivatives.
+    const Bounded c2 = (d1 + sigma * c1) / nu;
+    const Bounded d2 = -(nu * c1 + sigma * c2);
+    const Bounded e1 = nu * d2 - sigma * d1;
+    const Bounded e2 = -(nu * d1 + sigma * d2);
+    sigma_ = keep(sigma);
+    nu_ = keep(nu);
+    x_constant_ = keep(steady * inverse_omega);
+    x_linear_ = x_square_ = v_constant_ = v_linear_ = a_constant_ = keep(zero);
+    x_cos_ = keep(c1 * inverse_omega);
+    x_sin_ = keep(c2 * inverse_omega);
+    v_cos_ = keep(d1);
+    v_sin_ = keep(d2);
+    a_cos_ = keep(omega_b * e1);
+    a_sin_ = keep(omega_b * e2);
+  } else {
+    // C1 + D1 h + g0 h^2 / 2: x = y / w, v = dy/dh, a = w dv/dh.
+    sigma_ = nu_ = x_cos_ = x_sin_ = v_cos_ = v_sin_ = a_cos_ = a_sin_ = keep(zero);
+    x_constant_ = keep(c1 * inverse_omega);
+    x_linear_ = keep(d1 * inverse_omega);
+    x_square_ = keep(lanes::scaled(g0 * inverse_omega, 0.5));
+    v_constant_ = keep(d1);
+    v_linear_ = keep(g0);
+    a_constant_ = keep(omega_b * g0);
+  }
   omega_ = s.omega;
   a_hi_ = first(a.hi);
   a_lo_ = first(a.lo);
-  const auto all_finite = [](const Constant& c) {
-    return finite(c.hi) && finite(c.lo) && finite(c.error);
-  };
-  const Constant* const shared[] = {&sigma_, &nu_,    &x_steady_, &x_cos_, &x_sin_,
-                                    &v_cos_, &v_sin_, &a_cos_,    &a_sin_};
+  const Constant* const shared[] = {&sigma_,      &nu_,       &x_constant_, &x_linear_, &x_square_,
+                                    &v_constant_, &v_linear_, &a_constant_, &x_cos_,    &x_sin_,
+                                    &v_cos_,      &v_sin_,    &a_cos_,      &a_sin_};
   for (const Constant* c : shared)
-    if (!all_finite(*c)) return;
+    if (!finite(*c)) return;
   for (int j = 0; j < terms_; ++j) {
     const Term& t = term_[j];
     const Constant* const own[] = {&t.q,     &t.offset, &t.x_sin, &t.x_cos,
                                    &t.v_sin, &t.v_cos,  &t.a_sin, &t.a_cos};
     for (const Constant* c : own)
-      if (!all_finite(*c)) return;
+      if (!finite(*c)) return;
   }
 
   // Bounds on the errors of x, v and a for h up to 2, 8, 64 and 513 rad (one
@@ -193,9 +213,6 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
   // sines and cosines within 1 + 2^-50 with their errors for the largest
   // phase and table steps of the range, e^{-sigma h} within 1 + 2^-40 (h >= 0)
   // with its error.
-  const auto envelope = [](const Constant& c) {
-    return Envelope{{{splat(absolute(c.hi) + absolute(c.lo)), splat(0)}, splat(c.error)}};
-  };
   static_assert(kRanges == lanes::kRanges, "a range per lane");
   const Lanes h_max{kRange[0], kRange[1], kRange[2], kRange[3]};
   const Lanes tau_max = splat(absolute(a_hi_)) + h_max + 1;
@@ -205,20 +222,26 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
     const Lanes steps = phase.bound.value.hi * table.steps_per_radian + 1;
     return Envelope{{{splat(1 + 0x1p-50), splat(0)}, trig_error(phase.bound.error, steps)}};
   };
-  State<Envelope> bound{envelope(x_steady_), Envelope{exact(splat(0))}, Envelope{exact(splat(0))}};
+  State<Envelope> bound =
+      oscillation_ ? State<Envelope>{envelope(x_constant_), Envelope{exact(splat(0))},
+                                     Envelope{exact(splat(0))}}
+                   : parabola(envelope(x_constant_), envelope(x_linear_), envelope(x_square_),
+                              envelope(v_constant_), envelope(v_linear_), envelope(a_constant_), h);
   for (int j = 0; j < terms_; ++j) {
     const Term& t = term_[j];
     const Envelope trig = trig_envelope(phase_of(envelope(t.offset), envelope(t.q), h));
     add_share(bound, envelope(t.x_sin), envelope(t.x_cos), envelope(t.v_sin), envelope(t.v_cos),
               envelope(t.a_sin), envelope(t.a_cos), trig, trig);
   }
-  const Envelope decay_argument = envelope(sigma_) * h;
-  const Envelope decay{
-      {{splat(1 + 0x1p-40), splat(0)},
-       (lanes::kExpError + decay_argument.bound.error) * (1 + 0x1p-6) + lanes::kUnderflowSlack}};
-  const Envelope free_trig = trig_envelope(envelope(nu_) * h);
-  add_free(bound, envelope(x_cos_), envelope(x_sin_), envelope(v_cos_), envelope(v_sin_),
-           envelope(a_cos_), envelope(a_sin_), decay, free_trig, free_trig);
+  if (oscillation_) {
+    const Envelope decay_argument = envelope(sigma_) * h;
+    const Envelope decay{
+        {{splat(1 + 0x1p-40), splat(0)},
+         (lanes::kExpError + decay_argument.bound.error) * (1 + 0x1p-6) + lanes::kUnderflowSlack}};
+    const Envelope free_trig = trig_envelope(envelope(nu_) * h);
+    add_free(bound, envelope(x_cos_), envelope(x_sin_), envelope(v_cos_), envelope(v_sin_),
+             envelope(a_cos_), envelope(a_sin_), decay, free_trig, free_trig);
+  }
   for (int k = 0; k < kRanges; ++k) {
     velocity_error_[k] = bound.v.bound.error[k];
     acceleration_error_[k] = bound.a.bound.error[k];
@@ -232,19 +255,30 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
 
 void DoubleDoubleOscillator::evaluate(const double* t, std::size_t n, double* x, double* v,
                                       double* a, unsigned char* decided) const {
+  if (oscillation_)
+    evaluate_rows<true>(t, n, x, v, a, decided);
+  else
+    evaluate_rows<false>(t, n, x, v, a, decided);
+}
+
+template <bool kOscillation>
+void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, double* x, double* v,
+                                           double* a, unsigned char* decided) const {
   const DoubleDoubleTrigTable& table = double_double_trig_table();
   const DoubleDoubleExpTable& exp_table = double_double_exp_table();
-  const auto lanes_of = [](const Constant& c) { return Pair{splat(c.hi), splat(c.lo)}; };
   const Lanes omega = splat(omega_);
   const Pair start{splat(a_hi_), splat(a_lo_)};
-  const Pair sigma = lanes_of(sigma_), nu = lanes_of(nu_);
   for (std::size_t i = 0; i < n; i += 4) {
     const std::size_t used = lanes::group_size(i, n);
     const Lanes time = lanes::group_times(t, i, used);
     const Pair tau = lanes::two_prod(omega, time);  // w t exactly
     const Pair h = tau - start;
     Mask ok = (h.hi >= splat(0)) & (h.hi <= splat(kRange[kRanges - 1] * (1 - 0x1p-50)));
-    State<Pair> state{lanes_of(x_steady_), Pair{splat(0), splat(0)}, Pair{splat(0), splat(0)}};
+    State<Pair> state =
+        kOscillation
+            ? State<Pair>{lanes_of(x_constant_), Pair{splat(0), splat(0)}, Pair{splat(0), splat(0)}}
+            : parabola(lanes_of(x_constant_), lanes_of(x_linear_), lanes_of(x_square_),
+                       lanes_of(v_constant_), lanes_of(v_linear_), lanes_of(a_constant_), h);
     for (int j = 0; j < terms_; ++j) {
       const Term& term = term_[j];
       const Pair phase = phase_of(lanes_of(term.offset), lanes_of(term.q), h);
@@ -254,14 +288,16 @@ void DoubleDoubleOscillator::evaluate(const double* t, std::size_t n, double* x,
                 lanes_of(term.v_cos), lanes_of(term.a_sin), lanes_of(term.a_cos), trig.sin,
                 trig.cos);
     }
-    const Pair decay_argument = sigma * h;
-    ok &= decay_argument.hi <= splat(kLargestDecay);
-    const Pair decay = lanes::exp_of(-decay_argument, exp_table);
-    const Pair free_phase = nu * h;
-    ok &= magnitude(free_phase.hi) <= splat(kLargestAngle);
-    const Trig free = lanes::sin_cos(free_phase, _mm_set1_epi32(0), table);
-    add_free(state, lanes_of(x_cos_), lanes_of(x_sin_), lanes_of(v_cos_), lanes_of(v_sin_),
-             lanes_of(a_cos_), lanes_of(a_sin_), decay, free.cos, free.sin);
+    if constexpr (kOscillation) {
+      const Pair decay_argument = lanes_of(sigma_) * h;
+      ok &= decay_argument.hi <= splat(kLargestDecay);
+      const Pair decay = lanes::exp_of(-decay_argument, exp_table);
+      const Pair free_phase = lanes_of(nu_) * h;
+      ok &= magnitude(free_phase.hi) <= splat(kLargestAngle);
+      const Trig free = lanes::sin_cos(free_phase, _mm_set1_epi32(0), table);
+      add_free(state, lanes_of(x_cos_), lanes_of(x_sin_), lanes_of(v_cos_), lanes_of(v_sin_),
+               lanes_of(a_cos_), lanes_of(a_sin_), decay, free.cos, free.sin);
+    }
     const lanes::RangePick pick(h.hi);
     ok &= lanes::decided(state.v, pick(velocity_error_)) &
           lanes::decided(state.a, pick(acceleration_error_)) &

@@ -1,23 +1,31 @@
-// The fast path of the general model's dense output for an underdamped
-// spring without a record (docs/theory.md 10.6): a slip's x, v and a at many
-// times, four at once, in double-double arithmetic with a rigorous error
-// bound. Where the bound shows which double the exact closed form rounds
-// to, that double is the answer; elsewhere the lane is left undecided and
-// the caller evaluates it in long double (Ziv's strategy), as
-// double_double_slip.hpp does for the seed's slips.
+// The fast path of the general model's dense output for a slip with an
+// underdamped spring, or with neither spring nor damper, and forcing terms,
+// without a record (docs/theory.md 10.6): a slip's x, v and a at many times,
+// four at once, in double-double arithmetic with a rigorous error bound.
+// Where the bound shows which double the exact closed form rounds to, that
+// double is the answer; elsewhere the lane is left undecided and the caller
+// evaluates it in long double (Ziv's strategy), as double_double_slip.hpp
+// does for the seed's slips.
 //
 // The exact closed form at exact arguments: tau = w t and a = w t_a exactly,
 // h = tau - a, y = w x, v = dy/dtau, and the forcing terms j (the main one
 // b_0 = B / (m w), q_0 = 1, phi_0 = 0; each harmonic b_j = B_j / (m w),
 // q_j = w_j / w, phi_j), theta_j = q_j tau + phi_j:
 //   y'' + 2 sigma y' + rho^2 y = f0 - s r + sum_j b_j sin theta_j,
-//   sigma = c / (2 m w), rho^2 = k / (m w^2), nu^2 = rho^2 - sigma^2 > 0,
-//   y = P + sum_j b_j Im(H_j e^{i theta_j}) + e^{-sigma h} (C1 cos nu h + C2 sin nu h),
-// H_j = 1 / (rho^2 - q_j^2 + 2 i sigma q_j), P = (f0 - s r) / rho^2, C1 and
-// C2 from (y_a, v_a) at h = 0; v and dv/dtau are its derivatives.
+//   sigma = c / (2 m w), rho^2 = k / (m w^2), g0 = f0 - s r,
+//   y = sum_j b_j Im(H_j e^{i theta_j}) + (the free motion),
+// H_j = 1 / (rho^2 - q_j^2 + 2 i sigma q_j). The free motion, with C1 and D1
+// from (y_a, v_a) at h = 0:
+//   a spring, nu^2 = rho^2 - sigma^2 > 0:
+//     P + e^{-sigma h} (C1 cos nu h + C2 sin nu h), P = g0 / rho^2;
+//   neither spring nor damper (H_j = -1 / q_j^2):
+//     C1 + D1 h + g0 h^2 / 2.
+// v and dv/dtau are its derivatives.
 #pragma once
 
 #include <cstddef>
+
+#include "numeric/double_double_constant.hpp"
 
 namespace frictionref::detail {
 
@@ -43,8 +51,8 @@ void double_double_exp(double hi, double lo, double out[3]);
 class DoubleDoubleOscillator {
  public:
   // Only where double_double_lanes_available(). Not usable() for what it
-  // does not cover: no spring or an over- or critically damped one (or one
-  // whose nu^2 the bounds cannot resolve), more than kMaxHarmonics
+  // does not cover: a damper without a spring, an over- or critically damped
+  // spring (or one whose nu^2 the bounds cannot resolve), more than kMaxHarmonics
   // harmonics, a harmonic's |phi_j| beyond 2^20, |w t_a| or a harmonic's
   // phase at t_a beyond 2^24, parameters beyond 2^+-500, non-finite constants.
   explicit DoubleDoubleOscillator(const OscillatorSlipStart& start);
@@ -61,9 +69,7 @@ class DoubleDoubleOscillator {
                 unsigned char* decided) const;
 
  private:
-  struct Constant {
-    double hi = 0, lo = 0, error = 0;
-  };
+  using Constant = DoubleDoubleConstant;
   static constexpr int kMaxTerms = OscillatorSlipStart::kMaxHarmonics + 1;
   // One forcing term: q_j, theta_j(a) - base_j pi/128, the table index of
   // base_j, and its coefficients on sin theta_j and cos theta_j in x, v, a.
@@ -74,15 +80,23 @@ class DoubleDoubleOscillator {
   };
   static constexpr int kRanges = 4;
 
+  // The rows of one kind of free motion (oscillation: a spring's).
+  template <bool kOscillation>
+  void evaluate_rows(const double* t, std::size_t n, double* x, double* v, double* a,
+                     unsigned char* decided) const;
+
   bool usable_ = false;
+  bool oscillation_ = true;  // a spring's free motion, or C1 + D1 h + g0 h^2 / 2
   int terms_ = 0;
   double omega_ = 0;
   double a_hi_ = 0, a_lo_ = 0;  // w t_a exactly
   Term term_[kMaxTerms];
   Constant sigma_, nu_;
-  Constant x_steady_;  // P / w
+  // The polynomial part: x = x_constant + h (x_linear + x_square h),
+  // v = v_constant + v_linear h, a = a_constant. With a spring, P / w alone.
+  Constant x_constant_, x_linear_, x_square_, v_constant_, v_linear_, a_constant_;
   // The free oscillation's coefficients on e^{-sigma h} cos nu h and
-  // e^{-sigma h} sin nu h in x, v and a.
+  // e^{-sigma h} sin nu h in x, v and a (a spring's).
   Constant x_cos_, x_sin_, v_cos_, v_sin_, a_cos_, a_sin_;
   double velocity_error_[kRanges] = {}, acceleration_error_[kRanges] = {},
          position_error_[kRanges] = {};

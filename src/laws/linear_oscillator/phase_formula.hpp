@@ -5,8 +5,9 @@
 // segment's law. For double, without a record, a slip's rows take a fast
 // path first (fast_slip_rows.hpp, docs/theory.md 10), the long double law
 // where it cannot decide: the seed's (a constant force F0 - s R added) for a
-// model without spring, damper or harmonics; the underdamped oscillator's
-// (theory.md 10.6) for a spring.
+// model without spring, damper or harmonics; double_double_oscillator.hpp's
+// (theory.md 10.6) for an underdamped spring, or harmonics without spring
+// or damper.
 #pragma once
 
 #include <algorithm>
@@ -50,7 +51,7 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
                                          sign, phase.t_begin, phase.x_begin, phase.v_begin,
                                          model.force_offset});
         if (!seed_fast_->usable()) seed_fast_.reset();
-      } else if (model.stiffness > 0 &&
+      } else if ((model.stiffness > 0 || model.damping == 0) &&
                  model.harmonics.size() <= OscillatorSlipStart::kMaxHarmonics) {
         OscillatorSlipStart start{};
         start.omega = model.omega;
@@ -123,7 +124,7 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   BasicPhase<Real> phase_;
   Oscillator<Work> oscillator_;
   std::vector<LinearSlipLaw<Work>> laws_;  // in time order; they point into oscillator_
-  // For double, where the CPU allows: the seed's law, or the underdamped spring's.
+  // For double, where the CPU allows: the seed's law, or the oscillator's.
   std::optional<DoubleDoubleSlip> seed_fast_;
   std::optional<DoubleDoubleOscillator> spring_fast_;
 };
