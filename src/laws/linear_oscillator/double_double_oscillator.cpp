@@ -268,6 +268,12 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
   const DoubleDoubleExpTable& exp_table = double_double_exp_table();
   const Lanes omega = splat(omega_);
   const Pair start{splat(a_hi_), splat(a_lo_)};
+  // Loaded once: the stores below may alias the members, as far as the
+  // compiler knows.
+  const Pair sigma = lanes_of(sigma_), nu = lanes_of(nu_);
+  const Pair x_constant = lanes_of(x_constant_), x_linear = lanes_of(x_linear_),
+             x_square = lanes_of(x_square_), v_constant = lanes_of(v_constant_),
+             v_linear = lanes_of(v_linear_), a_constant = lanes_of(a_constant_);
   for (std::size_t i = 0; i < n; i += 4) {
     const std::size_t used = lanes::group_size(i, n);
     const Lanes time = lanes::group_times(t, i, used);
@@ -276,9 +282,8 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
     Mask ok = (h.hi >= splat(0)) & (h.hi <= splat(kRange[kRanges - 1] * (1 - 0x1p-50)));
     State<Pair> state =
         kOscillation
-            ? State<Pair>{lanes_of(x_constant_), Pair{splat(0), splat(0)}, Pair{splat(0), splat(0)}}
-            : parabola(lanes_of(x_constant_), lanes_of(x_linear_), lanes_of(x_square_),
-                       lanes_of(v_constant_), lanes_of(v_linear_), lanes_of(a_constant_), h);
+            ? State<Pair>{x_constant, Pair{splat(0), splat(0)}, Pair{splat(0), splat(0)}}
+            : parabola(x_constant, x_linear, x_square, v_constant, v_linear, a_constant, h);
     for (int j = 0; j < terms_; ++j) {
       const Term& term = term_[j];
       const Pair phase = phase_of(lanes_of(term.offset), lanes_of(term.q), h);
@@ -289,10 +294,10 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
                 trig.cos);
     }
     if constexpr (kOscillation) {
-      const Pair decay_argument = lanes_of(sigma_) * h;
+      const Pair decay_argument = sigma * h;
       ok &= decay_argument.hi <= splat(kLargestDecay);
       const Pair decay = lanes::exp_of(-decay_argument, exp_table);
-      const Pair free_phase = lanes_of(nu_) * h;
+      const Pair free_phase = nu * h;
       ok &= magnitude(free_phase.hi) <= splat(kLargestAngle);
       const Trig free = lanes::sin_cos(free_phase, _mm_set1_epi32(0), table);
       add_free(state, lanes_of(x_cos_), lanes_of(x_sin_), lanes_of(v_cos_), lanes_of(v_sin_),
