@@ -35,7 +35,7 @@ using lanes::Trig;
 using lanes::trig_error;
 
 constexpr double kLargestAngle = 512;  // of q_j h + offset and of nu h
-constexpr double kLargestDecay = 708;  // of sigma h: e^-708 is still normal
+constexpr double kLargestDecay = 708;  // of sigma h, kappa h: e^-708 is still normal
 
 // The closed form (double_double_oscillator.hpp), one text for the lanes'
 // values (Pair) and for the bounds on their errors (Envelope).
@@ -63,6 +63,13 @@ void add_free(State<V>& s, const V& x_cos, const V& x_sin, const V& v_cos, const
   s.a = s.a + decay * (a_cos * cosine + a_sin * sine);
 }
 
+// A decay's share: its coefficients on e^{-kappa h} in x, v and a.
+template <class V>
+void add_decay(State<V>& s, const V& x, const V& v, const V& a, const V& decay) {
+  s.x = s.x + x * decay;
+  s.v = s.v + v * decay;
+  s.a = s.a + a * decay;
+}
 // The uniformly accelerated motion of a slip without spring or damper:
 // x = x0 + h (x1 + x2 h), v = v0 + v1 h, a = a0.
 template <class V>
@@ -89,10 +96,7 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
         (s.sign == 1 || s.sign == -1) && s.harmonics >= 0 &&
         s.harmonics <= OscillatorSlipStart::kMaxHarmonics))
     return;
-  // A damper without a spring (its free motion a decay towards a drift) is
-  // left to the long double path.
-  if (s.stiffness == 0 && s.damping != 0) return;
-  oscillation_ = s.stiffness > 0;
+  const bool spring = s.stiffness > 0, damper = s.damping > 0;
   for (int j = 0; j < s.harmonics; ++j)
     if (!(moderate(s.harmonic_amplitude[j]) && moderate(s.harmonic_omega[j]) &&
           s.harmonic_omega[j] > 0 && absolute(s.harmonic_phase[j]) <= 0x1p20))
@@ -111,19 +115,32 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
   const Bounded r = quotient(s.friction, mass_omega);
   const Bounded sr = s.sign > 0 ? r : -r;
   const Bounded g0 = s.force_offset == 0 ? -sr : quotient(s.force_offset, mass_omega) - sr;
-  // The spring's steady response to g0, P = g0 / rho^2; none without a spring
-  // (g0 accelerates the free motion instead).
-  const Bounded steady = oscillation_ ? g0 / rho2 : exact(splat(0));
-  Bounded nu = exact(splat(0));
-  if (oscillation_) {
+  const Bounded zero = exact(splat(0));
+  // The response to g0: with a spring the steady P = g0 / rho^2; with a
+  // damper alone the drift g0 / (2 sigma) h; with neither, g0 accelerates
+  // the free motion (a parabola).
+  const Bounded steady = spring ? g0 / rho2 : zero;
+  const Bounded drift = !spring && damper ? g0 / lanes::scaled(sigma, 2) : zero;
+  // The free motion's kind, resolvably: otherwise (near critical damping)
+  // the long double path alone.
+  Bounded nu = zero, mu = zero;
+  if (!spring) {
+    free_ = damper ? FreeMotion::decays : FreeMotion::parabola;
+  } else {
     const Bounded nu2 = rho2 - sigma * sigma;
-    // Underdamped, resolvably: otherwise the long double path alone.
-    if (!(first(nu2.value.hi) > 4 * first(nu2.error))) return;
-    nu = lanes::square_root(nu2);
+    if (first(nu2.value.hi) > 4 * first(nu2.error)) {
+      free_ = FreeMotion::oscillation;
+      nu = lanes::square_root(nu2);
+    } else {
+      const Bounded mu2 = sigma * sigma - rho2;
+      if (!(first(mu2.value.hi) > 4 * first(mu2.error))) return;
+      free_ = FreeMotion::decays;
+      mu = lanes::square_root(mu2);
+    }
   }
 
   // The forcing terms: the particular solution and its slope at h = 0.
-  Bounded y_p = steady, v_p = exact(splat(0));
+  Bounded y_p = steady, v_p = drift;
   terms_ = 1 + s.harmonics;
   for (int j = 0; j < terms_; ++j) {
     const double amplitude = j == 0 ? s.amplitude : s.harmonic_amplitude[j - 1];
@@ -142,8 +159,8 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
     const Bounded sine{at_start.sin, trig_error_at_start};
     const Bounded cosine{at_start.cos, trig_error_at_start};
     // H = (rho^2 - q^2 - 2 i sigma q) / D, D = (rho^2 - q^2)^2 + (2 sigma q)^2;
-    // the term b Im(H e^{i theta}) = A sin theta + C cos theta. Without a
-    // spring or damper, H = -1 / q^2 (D = q^4 > 0).
+    // the term b Im(H e^{i theta}) = A sin theta + C cos theta (D > 0: q > 0
+    // and a spring or a damper; without either, H = -1 / q^2).
     const Bounded detuning = rho2 - q * q;
     const Bounded friction_part = lanes::scaled(sigma * q, 2);
     const Bounded denominator = detuning * detuning + friction_part * friction_part;
@@ -165,36 +182,77 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
   // The free motion from the rest of the start: y_h(0) = C1, y_h'(0) = D1.
   const Bounded c1 = exact(lanes::two_prod(omega, splat(s.x_begin))) - y_p;
   const Bounded d1 = exact(splat(s.v_begin)) - v_p;
-  const Bounded zero = exact(splat(0));
-  if (oscillation_) {
-    // e^{-sigma h} (C1 cos nu h + C2 sin nu h) and its derivatives.
-    const Bounded c2 = (d1 + sigma * c1) / nu;
-    const Bounded d2 = -(nu * c1 + sigma * c2);
-    const Bounded e1 = nu * d2 - sigma * d1;
-    const Bounded e2 = -(nu * d1 + sigma * d2);
-    sigma_ = keep(sigma);
-    nu_ = keep(nu);
-    x_constant_ = keep(steady * inverse_omega);
-    x_linear_ = x_square_ = v_constant_ = v_linear_ = a_constant_ = keep(zero);
-    x_cos_ = keep(c1 * inverse_omega);
-    x_sin_ = keep(c2 * inverse_omega);
-    v_cos_ = keep(d1);
-    v_sin_ = keep(d2);
-    a_cos_ = keep(omega_b * e1);
-    a_sin_ = keep(omega_b * e2);
-  } else {
-    // C1 + D1 h + g0 h^2 / 2: x = y / w, v = dy/dh, a = w dv/dh.
-    sigma_ = nu_ = x_cos_ = x_sin_ = v_cos_ = v_sin_ = a_cos_ = a_sin_ = keep(zero);
-    x_constant_ = keep(c1 * inverse_omega);
-    x_linear_ = keep(d1 * inverse_omega);
-    x_square_ = keep(lanes::scaled(g0 * inverse_omega, 0.5));
-    v_constant_ = keep(d1);
-    v_linear_ = keep(g0);
-    a_constant_ = keep(omega_b * g0);
+  sigma_ = nu_ = x_cos_ = x_sin_ = v_cos_ = v_sin_ = a_cos_ = a_sin_ = keep(zero);
+  x_constant_ = x_linear_ = x_square_ = v_constant_ = v_linear_ = a_constant_ = keep(zero);
+  decays_ = 0;
+  // A decay e^{-kappa h} with coefficient M in y: (-kappa)^n M in the n-th
+  // derivative.
+  const auto add_decay_term = [&](const Bounded& kappa, const Bounded& m) {
+    Decay& d = decay_[decays_++];
+    d.rate = keep(kappa);
+    d.x = keep(m * inverse_omega);
+    d.v = keep(-(kappa * m));
+    d.a = keep(omega_b * (kappa * kappa * m));
+  };
+  switch (free_) {
+    case FreeMotion::oscillation: {
+      // P + e^{-sigma h} (C1 cos nu h + C2 sin nu h) and its derivatives.
+      const Bounded c2 = (d1 + sigma * c1) / nu;
+      const Bounded d2 = -(nu * c1 + sigma * c2);
+      const Bounded e1 = nu * d2 - sigma * d1;
+      const Bounded e2 = -(nu * d1 + sigma * d2);
+      sigma_ = keep(sigma);
+      nu_ = keep(nu);
+      x_constant_ = keep(steady * inverse_omega);
+      x_cos_ = keep(c1 * inverse_omega);
+      x_sin_ = keep(c2 * inverse_omega);
+      v_cos_ = keep(d1);
+      v_sin_ = keep(d2);
+      a_cos_ = keep(omega_b * e1);
+      a_sin_ = keep(omega_b * e2);
+      break;
+    }
+    case FreeMotion::parabola:
+      // C1 + D1 h + g0 h^2 / 2: x = y / w, v = dy/dh, a = w dv/dh.
+      x_constant_ = keep(c1 * inverse_omega);
+      x_linear_ = keep(d1 * inverse_omega);
+      x_square_ = keep(lanes::scaled(g0 * inverse_omega, 0.5));
+      v_constant_ = keep(d1);
+      v_linear_ = keep(g0);
+      a_constant_ = keep(omega_b * g0);
+      break;
+    case FreeMotion::decays:
+      if (spring) {
+        // Over-damped: P + A e^{-kappa1 h} + B e^{-kappa2 h}, kappa2 = sigma
+        // + mu, kappa1 = rho^2 / kappa2 (sigma - mu without its
+        // cancellation), A + B = C1, -kappa1 A - kappa2 B = D1.
+        const Bounded kappa2 = sigma + mu;
+        const Bounded kappa1 = rho2 / kappa2;
+        const Bounded gap = lanes::scaled(mu, 2);  // kappa2 - kappa1
+        x_constant_ = keep(steady * inverse_omega);
+        add_decay_term(kappa1, (d1 + kappa2 * c1) / gap);
+        add_decay_term(kappa2, -((d1 + kappa1 * c1) / gap));
+      } else {
+        // A damper alone: A + (g0 / 2 sigma) h + B e^{-2 sigma h}, B = -D1 /
+        // (2 sigma) (D1 net of the drift), A = C1 - B.
+        const Bounded kappa = lanes::scaled(sigma, 2);
+        const Bounded b = -(d1 / kappa);
+        x_constant_ = keep((c1 - b) * inverse_omega);
+        x_linear_ = keep(drift * inverse_omega);
+        v_constant_ = keep(drift);
+        add_decay_term(kappa, b);
+      }
+      break;
   }
   omega_ = s.omega;
   a_hi_ = first(a.hi);
   a_lo_ = first(a.lo);
+  for (int k = 0; k < decays_; ++k) {
+    const Decay& d = decay_[k];
+    const Constant* const own[] = {&d.rate, &d.x, &d.v, &d.a};
+    for (const Constant* c : own)
+      if (!finite(*c)) return;
+  }
   const Constant* const shared[] = {&sigma_,      &nu_,       &x_constant_, &x_linear_, &x_square_,
                                     &v_constant_, &v_linear_, &a_constant_, &x_cos_,    &x_sin_,
                                     &v_cos_,      &v_sin_,    &a_cos_,      &a_sin_};
@@ -211,8 +269,8 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
   // Bounds on the errors of x, v and a for h up to 2, 8, 64 and 513 rad (one
   // range per lane), from the closed form on envelopes of its operands: the
   // sines and cosines within 1 + 2^-50 with their errors for the largest
-  // phase and table steps of the range, e^{-sigma h} within 1 + 2^-40 (h >= 0)
-  // with its error.
+  // phase and table steps of the range, each e^{-kappa h} within 1 + 2^-40
+  // (kappa, h >= 0) with its error.
   static_assert(kRanges == lanes::kRanges, "a range per lane");
   const Lanes h_max{kRange[0], kRange[1], kRange[2], kRange[3]};
   const Lanes tau_max = splat(absolute(a_hi_)) + h_max + 1;
@@ -222,25 +280,32 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
     const Lanes steps = phase.bound.value.hi * table.steps_per_radian + 1;
     return Envelope{{{splat(1 + 0x1p-50), splat(0)}, trig_error(phase.bound.error, steps)}};
   };
+  const auto decay_envelope = [&](const Constant& rate) {
+    const Envelope argument = envelope(rate) * h;
+    return Envelope{
+        {{splat(1 + 0x1p-40), splat(0)},
+         (lanes::kExpError + argument.bound.error) * (1 + 0x1p-6) + lanes::kUnderflowSlack}};
+  };
   State<Envelope> bound =
-      oscillation_ ? State<Envelope>{envelope(x_constant_), Envelope{exact(splat(0))},
-                                     Envelope{exact(splat(0))}}
-                   : parabola(envelope(x_constant_), envelope(x_linear_), envelope(x_square_),
-                              envelope(v_constant_), envelope(v_linear_), envelope(a_constant_), h);
+      free_ == FreeMotion::oscillation
+          ? State<Envelope>{envelope(x_constant_), Envelope{exact(splat(0))},
+                            Envelope{exact(splat(0))}}
+          : parabola(envelope(x_constant_), envelope(x_linear_), envelope(x_square_),
+                     envelope(v_constant_), envelope(v_linear_), envelope(a_constant_), h);
   for (int j = 0; j < terms_; ++j) {
     const Term& t = term_[j];
     const Envelope trig = trig_envelope(phase_of(envelope(t.offset), envelope(t.q), h));
     add_share(bound, envelope(t.x_sin), envelope(t.x_cos), envelope(t.v_sin), envelope(t.v_cos),
               envelope(t.a_sin), envelope(t.a_cos), trig, trig);
   }
-  if (oscillation_) {
-    const Envelope decay_argument = envelope(sigma_) * h;
-    const Envelope decay{
-        {{splat(1 + 0x1p-40), splat(0)},
-         (lanes::kExpError + decay_argument.bound.error) * (1 + 0x1p-6) + lanes::kUnderflowSlack}};
+  if (free_ == FreeMotion::oscillation) {
     const Envelope free_trig = trig_envelope(envelope(nu_) * h);
     add_free(bound, envelope(x_cos_), envelope(x_sin_), envelope(v_cos_), envelope(v_sin_),
-             envelope(a_cos_), envelope(a_sin_), decay, free_trig, free_trig);
+             envelope(a_cos_), envelope(a_sin_), decay_envelope(sigma_), free_trig, free_trig);
+  }
+  for (int k = 0; k < decays_; ++k) {
+    const Decay& d = decay_[k];
+    add_decay(bound, envelope(d.x), envelope(d.v), envelope(d.a), decay_envelope(d.rate));
   }
   for (int k = 0; k < kRanges; ++k) {
     velocity_error_[k] = bound.v.bound.error[k];
@@ -255,13 +320,17 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
 
 void DoubleDoubleOscillator::evaluate(const double* t, std::size_t n, double* x, double* v,
                                       double* a, unsigned char* decided) const {
-  if (oscillation_)
-    evaluate_rows<true>(t, n, x, v, a, decided);
-  else
-    evaluate_rows<false>(t, n, x, v, a, decided);
+  switch (free_) {
+    case FreeMotion::oscillation:
+      return evaluate_rows<FreeMotion::oscillation>(t, n, x, v, a, decided);
+    case FreeMotion::parabola:
+      return evaluate_rows<FreeMotion::parabola>(t, n, x, v, a, decided);
+    case FreeMotion::decays:
+      return evaluate_rows<FreeMotion::decays>(t, n, x, v, a, decided);
+  }
 }
 
-template <bool kOscillation>
+template <DoubleDoubleOscillator::FreeMotion kFree>
 void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, double* x, double* v,
                                            double* a, unsigned char* decided) const {
   const DoubleDoubleTrigTable& table = double_double_trig_table();
@@ -281,7 +350,7 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
     const Pair h = tau - start;
     Mask ok = (h.hi >= splat(0)) & (h.hi <= splat(kRange[kRanges - 1] * (1 - 0x1p-50)));
     State<Pair> state =
-        kOscillation
+        kFree == FreeMotion::oscillation
             ? State<Pair>{x_constant, Pair{splat(0), splat(0)}, Pair{splat(0), splat(0)}}
             : parabola(x_constant, x_linear, x_square, v_constant, v_linear, a_constant, h);
     for (int j = 0; j < terms_; ++j) {
@@ -293,7 +362,7 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
                 lanes_of(term.v_cos), lanes_of(term.a_sin), lanes_of(term.a_cos), trig.sin,
                 trig.cos);
     }
-    if constexpr (kOscillation) {
+    if constexpr (kFree == FreeMotion::oscillation) {
       const Pair decay_argument = sigma * h;
       ok &= decay_argument.hi <= splat(kLargestDecay);
       const Pair decay = lanes::exp_of(-decay_argument, exp_table);
@@ -302,6 +371,15 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
       const Trig free = lanes::sin_cos(free_phase, _mm_set1_epi32(0), table);
       add_free(state, lanes_of(x_cos_), lanes_of(x_sin_), lanes_of(v_cos_), lanes_of(v_sin_),
                lanes_of(a_cos_), lanes_of(a_sin_), decay, free.cos, free.sin);
+    }
+    if constexpr (kFree == FreeMotion::decays) {
+      for (int k = 0; k < decays_; ++k) {
+        const Decay& d = decay_[k];
+        const Pair argument = lanes_of(d.rate) * h;
+        ok &= argument.hi <= splat(kLargestDecay);
+        add_decay(state, lanes_of(d.x), lanes_of(d.v), lanes_of(d.a),
+                  lanes::exp_of(-argument, exp_table));
+      }
     }
     const lanes::RangePick pick(h.hi);
     ok &= lanes::decided(state.v, pick(velocity_error_)) &

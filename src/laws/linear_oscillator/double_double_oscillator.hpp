@@ -1,6 +1,6 @@
-// The fast path of the general model's dense output for a slip with an
-// underdamped spring, or with neither spring nor damper, and forcing terms,
-// without a record (docs/theory.md 10.6): a slip's x, v and a at many times,
+// The fast path of the general model's dense output for a slip with a spring
+// and damper (not critically damped), a damper alone, or neither, and forcing
+// terms, without a record (docs/theory.md 10.6): a slip's x, v and a at many times,
 // four at once, in double-double arithmetic with a rigorous error bound.
 // Where the bound shows which double the exact closed form rounds to, that
 // double is the answer; elsewhere the lane is left undecided and the caller
@@ -16,8 +16,12 @@
 //   y = sum_j b_j Im(H_j e^{i theta_j}) + (the free motion),
 // H_j = 1 / (rho^2 - q_j^2 + 2 i sigma q_j). The free motion, with C1 and D1
 // from (y_a, v_a) at h = 0:
-//   a spring, nu^2 = rho^2 - sigma^2 > 0:
+//   a spring, under-damped, nu^2 = rho^2 - sigma^2 > 0:
 //     P + e^{-sigma h} (C1 cos nu h + C2 sin nu h), P = g0 / rho^2;
+//   a spring, over-damped, mu^2 = sigma^2 - rho^2 > 0:
+//     P + A e^{-kappa1 h} + B e^{-kappa2 h}, kappa2 = sigma + mu,
+//     kappa1 = rho^2 / kappa2;
+//   a damper alone: A + (g0 / 2 sigma) h + B e^{-2 sigma h};
 //   neither spring nor damper (H_j = -1 / q_j^2):
 //     C1 + D1 h + g0 h^2 / 2.
 // v and dv/dtau are its derivatives.
@@ -51,8 +55,8 @@ void double_double_exp(double hi, double lo, double out[3]);
 class DoubleDoubleOscillator {
  public:
   // Only where double_double_lanes_available(). Not usable() for what it
-  // does not cover: a damper without a spring, an over- or critically damped
-  // spring (or one whose nu^2 the bounds cannot resolve), more than kMaxHarmonics
+  // does not cover: a critically damped spring (one whose nu^2 the bounds
+  // cannot tell from 0), more than kMaxHarmonics
   // harmonics, a harmonic's |phi_j| beyond 2^20, |w t_a| or a harmonic's
   // phase at t_a beyond 2^24, parameters beyond 2^+-500, non-finite constants.
   explicit DoubleDoubleOscillator(const OscillatorSlipStart& start);
@@ -63,7 +67,8 @@ class DoubleDoubleOscillator {
   // correctly rounded doubles of the closed form at t[i], or decided[i] = 0.
   // Undecided besides the rows near rounding boundaries: times before the
   // start or beyond 513 rad of forcing phase from it, rows where a term's
-  // phase (q_j h, nu h) leaves 512 rad or sigma h exceeds 708. Whether a
+  // phase (q_j h, nu h) leaves 512 rad or a decay's sigma h or kappa h
+  // exceeds 708. Whether a
   // time is decided depends on the start and that time only.
   void evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
                 unsigned char* decided) const;
@@ -80,13 +85,17 @@ class DoubleDoubleOscillator {
   };
   static constexpr int kRanges = 4;
 
-  // The rows of one kind of free motion (oscillation: a spring's).
-  template <bool kOscillation>
+  // The free motion's kind: a damped oscillation (under-damped spring), a
+  // parabola (neither spring nor damper), or one or two decays (over-damped
+  // spring, damper alone).
+  enum class FreeMotion { oscillation, parabola, decays };
+  // The rows of one kind of free motion.
+  template <FreeMotion kFree>
   void evaluate_rows(const double* t, std::size_t n, double* x, double* v, double* a,
                      unsigned char* decided) const;
 
   bool usable_ = false;
-  bool oscillation_ = true;  // a spring's free motion, or C1 + D1 h + g0 h^2 / 2
+  FreeMotion free_ = FreeMotion::oscillation;
   int terms_ = 0;
   double omega_ = 0;
   double a_hi_ = 0, a_lo_ = 0;  // w t_a exactly
@@ -95,8 +104,14 @@ class DoubleDoubleOscillator {
   // The polynomial part: x = x_constant + h (x_linear + x_square h),
   // v = v_constant + v_linear h, a = a_constant. With a spring, P / w alone.
   Constant x_constant_, x_linear_, x_square_, v_constant_, v_linear_, a_constant_;
+  // A decay: its rate kappa and its coefficients on e^{-kappa h} in x, v, a.
+  struct Decay {
+    Constant rate, x, v, a;
+  };
+  Decay decay_[2];
+  int decays_ = 0;
   // The free oscillation's coefficients on e^{-sigma h} cos nu h and
-  // e^{-sigma h} sin nu h in x, v and a (a spring's).
+  // e^{-sigma h} sin nu h in x, v and a (an under-damped spring's).
   Constant x_cos_, x_sin_, v_cos_, v_sin_, a_cos_, a_sin_;
   double velocity_error_[kRanges] = {}, acceleration_error_[kRanges] = {},
          position_error_[kRanges] = {};

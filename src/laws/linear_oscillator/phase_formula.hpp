@@ -6,8 +6,8 @@
 // path first (fast_slip_rows.hpp, docs/theory.md 10), the long double law
 // where it cannot decide: the seed's (a constant force F0 - s R added) for a
 // model without spring, damper or harmonics; double_double_oscillator.hpp's
-// (theory.md 10.6) for an underdamped spring, or harmonics without spring
-// or damper.
+// (theory.md 10.6) for the others (up to four harmonics, not critically
+// damped).
 #pragma once
 
 #include <algorithm>
@@ -51,8 +51,7 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
                                          sign, phase.t_begin, phase.x_begin, phase.v_begin,
                                          model.force_offset});
         if (!seed_fast_->usable()) seed_fast_.reset();
-      } else if ((model.stiffness > 0 || model.damping == 0) &&
-                 model.harmonics.size() <= OscillatorSlipStart::kMaxHarmonics) {
+      } else if (model.harmonics.size() <= OscillatorSlipStart::kMaxHarmonics) {
         OscillatorSlipStart start{};
         start.omega = model.omega;
         start.amplitude = model.amplitude;
