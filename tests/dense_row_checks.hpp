@@ -1,7 +1,8 @@
 // What the dense fast paths' tests compare rows with: the double nearest a
-// 50-digit value, and rows equal bit for bit.
+// 50-digit value, rows equal bit for bit, and the rows they sample in a slip.
 #pragma once
 
+#include <array>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <cstring>
@@ -26,6 +27,28 @@ inline bool same_row(const State& s, const State& r) {
   return std::memcmp(&s.x, &r.x, sizeof(double)) == 0 &&
          std::memcmp(&s.v, &r.v, sizeof(double)) == 0 &&
          std::memcmp(&s.a, &r.a, sizeof(double)) == 0 && s.t == r.t && s.phase == r.phase;
+}
+
+// A slip's rows at 1/6, 1/2 and 5/6 of its duration, as the tests sample
+// them: through the formula's batch (at_many: the fast path with its
+// fallback) and through its long double path alone.
+struct SlipRow {
+  double t;
+  State batch, long_double;
+  bool inside;  // t strictly inside the phase (not rounded onto an end)
+};
+template <class Formula>
+std::array<SlipRow, 3> slip_rows(const Formula& formula, const Phase& phase) {
+  constexpr int kTimes = 3;
+  double times[kTimes];
+  for (int j = 0; j < kTimes; ++j) times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
+  State batch[kTimes];
+  formula.at_many(times, kTimes, batch);
+  std::array<SlipRow, kTimes> rows;
+  for (int j = 0; j < kTimes; ++j)
+    rows[j] = {times[j], batch[j], formula.long_double_at(times[j]),
+               times[j] > phase.t_begin && times[j] < phase.t_end};
+  return rows;
 }
 
 }  // namespace frictionref::testing

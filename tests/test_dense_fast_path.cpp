@@ -159,27 +159,21 @@ TEST(DenseFastPath, SameRowsAsTheLongDoublePathOnRandomModels) {
       2026, 100000,
       [&](const testing::RandomModel& r, const Phase& phase,
           const detail::HarmonicCoulombFormula<double>& formula) {
-        constexpr int kTimes = 3;
-        double times[kTimes];
-        for (int j = 0; j < kTimes; ++j)
-          times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
-        State fast[kTimes];
-        formula.at_many(times, kTimes, fast);
         std::optional<ExactSlip> exact;
-        for (int j = 0; j < kTimes; ++j) {
+        for (const testing::SlipRow& row : testing::slip_rows(formula, phase)) {
           ++rows;
-          const double phase_angle = std::fabs(r.model.omega * times[j]);
+          const double phase_angle = std::fabs(r.model.omega * row.t);
           const int decade =
               phase_angle < 1 ? 0 : std::min(10, static_cast<int>(std::log10(phase_angle)) + 1);
           ++rows_by_decade[decade];
-          const State slow = formula.long_double_at(times[j]);
-          if (same_row(fast[j], slow)) continue;
+          if (same_row(row.batch, row.long_double)) continue;
           ++differing;
           ++differing_by_decade[decade];
           if (!exact) exact.emplace(r.model, phase);
-          const Exact e = exact->at(times[j]);
-          const bool fast_rounded = fast[j].x == e.x && fast[j].v == e.v && fast[j].a == e.a;
-          ASSERT_TRUE(fast_rounded) << testing::describe(r) << " t=" << times[j];
+          const Exact e = exact->at(row.t);
+          const State& fast = row.batch;
+          ASSERT_TRUE(fast.x == e.x && fast.v == e.v && fast.a == e.a)
+              << testing::describe(r) << " t=" << row.t;
           ++fast_closer;
         }
       });
@@ -229,31 +223,25 @@ TEST(DenseFastPath, GeneralModelWithoutSpringSameRowsAsItsLongDoublePath) {
         if (phase.kind == PhaseKind::stick) continue;
         ++slips;
         const detail::LinearOscillatorFormula<double> formula(m, phase);
-        constexpr int kTimes = 3;
-        double times[kTimes];
-        for (int j = 0; j < kTimes; ++j)
-          times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
-        State fast[kTimes];
-        formula.at_many(times, kTimes, fast);
         std::optional<ExactSlip> exact;
-        for (int j = 0; j < kTimes; ++j) {
-          if (!(times[j] > phase.t_begin && times[j] < phase.t_end)) continue;
+        for (const testing::SlipRow& row : testing::slip_rows(formula, phase)) {
+          if (!row.inside) continue;
           ++rows;
           State only_fast;
           const bool near = std::fabs(m.omega * phase.t_begin) <= 0x1p24;
           near_rows += near;
-          if (formula.fast_at(times[j], only_fast)) {
+          if (formula.fast_at(row.t, only_fast)) {
             ++decided;
             near_decided += near;
           }
-          const State slow = formula.long_double_at(times[j]);
-          if (same_row(fast[j], slow)) continue;
+          if (same_row(row.batch, row.long_double)) continue;
           ++differing;
           if (!exact) exact.emplace(m, phase);
-          const Exact e = exact->at(times[j]);
-          ASSERT_TRUE(fast[j].x == e.x && fast[j].v == e.v && fast[j].a == e.a)
+          const Exact e = exact->at(row.t);
+          const State& fast = row.batch;
+          ASSERT_TRUE(fast.x == e.x && fast.v == e.v && fast.a == e.a)
               << testing::describe(r) << " Rs=" << m.static_limit() << " F0=" << m.force_offset
-              << " t=" << times[j];
+              << " t=" << row.t;
         }
       }
     } catch (const InvalidInput&) {

@@ -312,26 +312,20 @@ void same_rows_as_the_long_double_path(Family family, std::uint64_t seed, int co
   std::uint64_t rows = 0, decided = 0, differing = 0;
   const auto visit = [&](const testing::RandomModel& r, const Phase& phase,
                          const detail::LinearOscillatorFormula<double>& formula) {
-    constexpr int kTimes = 3;
-    double times[kTimes];
-    for (int j = 0; j < kTimes; ++j)
-      times[j] = phase.t_begin + phase.duration() * (j + 0.5) / kTimes;
-    State fast[kTimes];
-    formula.at_many(times, kTimes, fast);
     std::optional<ExactSpringSlip> exact;
-    for (int j = 0; j < kTimes; ++j) {
-      if (!(times[j] > phase.t_begin && times[j] < phase.t_end)) continue;
+    for (const testing::SlipRow& row : testing::slip_rows(formula, phase)) {
+      if (!row.inside) continue;
       ++rows;
       State only_fast;
-      decided += formula.fast_at(times[j], only_fast);
-      const State slow = formula.long_double_at(times[j]);
-      if (same_row(fast[j], slow)) continue;
+      decided += formula.fast_at(row.t, only_fast);
+      if (same_row(row.batch, row.long_double)) continue;
       ++differing;
       if (!exact) exact.emplace(r.model, phase);
-      const Exact e = exact->at(times[j]);
-      ASSERT_TRUE(fast[j].x == nearest(e.x) && fast[j].v == nearest(e.v) &&
-                  fast[j].a == nearest(e.a))
-          << describe_spring(r) << " t=" << times[j];
+      const Exact e = exact->at(row.t);
+      const State& fast = row.batch;
+      const State& slow = row.long_double;
+      ASSERT_TRUE(fast.x == nearest(e.x) && fast.v == nearest(e.v) && fast.a == nearest(e.a))
+          << describe_spring(r) << " t=" << row.t;
       // The motion's scales: velocity (forces) / (m w), and its x and a; the
       // forces include the spring's and the damper's at the start (with a
       // spring's force far above the others, the long double path's 64-bit
@@ -347,7 +341,7 @@ void same_rows_as_the_long_double_path(Family family, std::uint64_t seed, int co
       };
       ASSERT_TRUE(near(slow.x, e.x, speed / m.omega + std::fabs(phase.x_begin)) &&
                   near(slow.v, e.v, speed) && near(slow.a, e.a, speed * m.omega))
-          << describe_spring(r) << " t=" << times[j];
+          << describe_spring(r) << " t=" << row.t;
     }
   };
   const std::uint64_t refused = for_each_spring_slip(seed, count, visit, family);
