@@ -31,7 +31,7 @@ void BM_GeneralEvents(benchmark::State& state) {
   state.counters["evaluations_per_event"] =
       static_cast<double>(sign_tests) / static_cast<double>(events);
 }
-BENCHMARK(BM_GeneralEvents)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GeneralEvents)->Apply(each_general_case)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace frictionref::bench

@@ -99,7 +99,7 @@ void BM_GeneralDenseSamples(benchmark::State& state) {
   state.counters["fallback_share"] =
       fallback_share<detail::LinearOscillatorFormula<double>>(model, dense_grid());
 }
-BENCHMARK(BM_GeneralDenseSamples)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GeneralDenseSamples)->Apply(each_general_case)->Unit(benchmark::kMillisecond);
 
 // The formula alone over the same rows: /L/1 the fast path with its fallback
 // (at_many, as the sampler calls it), /L/0 the long double path for every

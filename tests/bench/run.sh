@@ -106,7 +106,8 @@ print(f"- one std::cos call: {cos_ns:.2f} ns\n")
 # same regime, in the same run (case 0 is the seed's model at lambda 0.7; cases
 # 1 and 2 slide continuously, as the seed's does at lambda 0.3).
 seed_of_general = {"BM_GeneralEvents/0": "BM_Events/70", "BM_GeneralEvents/1": "BM_Events/30",
-                   "BM_GeneralEvents/2": "BM_Events/30", "BM_GeneralEvents/3": "BM_Events/30"}
+                   "BM_GeneralEvents/2": "BM_Events/30", "BM_GeneralEvents/3": "BM_Events/30",
+                   "BM_GeneralEvents/4": "BM_Events/30", "BM_GeneralEvents/5": "BM_Events/30"}
 units_of = {b["run_name"]: 1e9 / b["items_per_second"] / cos_ns for b in rows}
 print("| benchmark | what | items per second | ns per item | cos calls per item | target |")
 print("|---|---|---:|---:|---:|---:|")
@@ -147,10 +148,14 @@ counterparts = [
     ("BM_GeneralEvents/1", "BM_Events/30", "event"),
     ("BM_GeneralEvents/2", "BM_Events/30", "event"),
     ("BM_GeneralEvents/3", "BM_Events/30", "event"),
+    ("BM_GeneralEvents/4", "BM_Events/30", "event"),
+    ("BM_GeneralEvents/5", "BM_Events/30", "event"),
     ("BM_GeneralDenseSamples/0", "BM_DenseSamples/70", "dense sample"),
     ("BM_GeneralDenseSamples/1", "BM_DenseSamples/30", "dense sample"),
     ("BM_GeneralDenseSamples/2", "BM_DenseSamples/30", "dense sample"),
     ("BM_GeneralDenseSamples/3", "BM_DenseSamples/30", "dense sample"),
+    ("BM_GeneralDenseSamples/4", "BM_DenseSamples/30", "dense sample"),
+    ("BM_GeneralDenseSamples/5", "BM_DenseSamples/30", "dense sample"),
     ("BM_GeneralRecordSamples", "BM_RecordSamples/one_way:0", "record sample"),
     ("BM_RecordSamples/one_way:1", "BM_DenseSamples/30", "record sample against a dense sample"),
     ("BM_RecordSamples/one_way:0", "BM_DenseSamples/30", "record sample against a dense sample"),
