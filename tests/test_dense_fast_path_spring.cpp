@@ -129,8 +129,9 @@ class ExactSpringSlip {
 // Random models from the seed's stream. Springs: natural frequency w 10^u
 // (u uniform on [-1, 1]), damping ratio 0 (a tenth) or log-uniform on
 // [1e-4, 0.95], and a tenth over-damped (ratio 1 to 4); up to two harmonics.
-// Harmonics alone: no spring or damper, one to three harmonics (with none the
-// seed's fast path takes the slip). Decays: half over-damped springs (ratio
+// Harmonics alone: no spring or damper, one to eight harmonics (with none the
+// seed's fast path takes the slip), a fifth driven by the harmonics alone
+// (B = 0 once they are drawn). Decays: half over-damped springs (ratio
 // 1 + 10^u, u on [-12, 1], so some within rounding of critical damping,
 // where the fast path stands aside), half dampers alone (c = m w 10^u, u on
 // [-3, 1]); up to two harmonics. All: Rs = R (1 + 10^u), u on [-15, 0];
@@ -165,11 +166,12 @@ class SpringModels {
     m.force_offset = unit() < 0.5 ? 0.0
                                   : (unit() < 0.5 ? 1 : -1) * (m.amplitude + m.friction) *
                                         std::pow(10.0, uniform(-4, 0));
-    const int harmonics = family_ == Family::harmonics_alone ? 1 + static_cast<int>(unit() * 3)
+    const int harmonics = family_ == Family::harmonics_alone ? 1 + static_cast<int>(unit() * 8)
                                                              : static_cast<int>(unit() * 3);
     for (int j = 0; j < harmonics; ++j)
       m.harmonics.push_back({m.amplitude * unit(), m.omega * std::pow(10.0, uniform(-1, 1)),
                              uniform(-3.141592653589793, 3.141592653589793)});
+    if (family_ == Family::harmonics_alone && unit() < 0.2) m.amplitude = 0;
     return r;
   }
 

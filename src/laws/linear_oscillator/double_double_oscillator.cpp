@@ -141,9 +141,10 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
 
   // The forcing terms: the particular solution and its slope at h = 0.
   Bounded y_p = steady, v_p = drift;
-  terms_ = 1 + s.harmonics;
-  for (int j = 0; j < terms_; ++j) {
+  terms_ = 0;
+  for (int j = 0; j < 1 + s.harmonics; ++j) {
     const double amplitude = j == 0 ? s.amplitude : s.harmonic_amplitude[j - 1];
+    if (amplitude == 0) continue;  // adds exactly nothing (e.g. a model driven by harmonics)
     const Bounded b = quotient(amplitude, mass_omega);
     const Bounded q =
         j == 0 ? exact(splat(1)) : quotient(s.harmonic_omega[j - 1], Pair{omega, splat(0)});
@@ -151,7 +152,7 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
     if (!(absolute(first(theta.value.hi)) <= 0x1p24)) return;
     const Lanes k = lanes::nearest_integer(theta.value.hi * table.steps_per_radian);
     const Bounded offset = theta - table_angle(k, table);  // |offset| <= pi/256
-    Term& term = term_[j];
+    Term& term = term_[terms_++];
     term.base =
         static_cast<int>(static_cast<long long>(first(k)) & (DoubleDoubleTrigTable::kSize - 1));
     const Trig at_start = lanes::sin_cos(offset.value, _mm_set1_epi32(term.base), table);

@@ -38,7 +38,7 @@ namespace frictionref::detail {
 // that computes with it is compiled for AVX2 and includes no library header
 // with inline functions (double_double_slip.cpp).
 struct OscillatorSlipStart {
-  static constexpr int kMaxHarmonics = 4;
+  static constexpr int kMaxHarmonics = 8;
   double omega, amplitude, mass, friction, stiffness, damping, force_offset;
   int harmonics;  // how many of the arrays below are used
   double harmonic_amplitude[kMaxHarmonics], harmonic_omega[kMaxHarmonics],

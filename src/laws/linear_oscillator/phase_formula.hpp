@@ -6,7 +6,7 @@
 // path first (fast_slip_rows.hpp, docs/theory.md 10), the long double law
 // where it cannot decide: the seed's (a constant force F0 - s R added) for a
 // model without spring, damper or harmonics; double_double_oscillator.hpp's
-// (theory.md 10.6) for the others (up to four harmonics, not critically
+// (theory.md 10.6) for the others (up to eight harmonics, not critically
 // damped).
 #pragma once
 
