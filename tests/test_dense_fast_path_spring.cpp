@@ -229,12 +229,12 @@ TEST(DoubleDoubleExp, WithinItsBoundOfFiftyDigits) {
   Fifty worst = 0;
   double bound = 0;
   for (int i = 0; i < 60000; ++i) {
-    // A third near the reduction's boundaries (k ln 2 +- 1/128 multiples), a
+    // A third near the reduction's boundaries (k ln 2 + m / 2048 + 1/4096), a
     // third small, the rest anywhere in [-708, 0].
     double hi;
     if (i % 3 == 0)
       hi = -static_cast<double>(ln2 * Fifty(std::floor(unit() * 1000)) +
-                                Fifty(std::floor(unit() * 45) - 22) / 64 + Fifty(1) / 128) *
+                                Fifty(std::floor(unit() * 1421) - 710) / 2048 + Fifty(1) / 4096) *
            (1 + (unit() - 0.5) * 1e-12);
     else if (i % 3 == 1)
       hi = -std::ldexp(unit(), -static_cast<int>(unit() * 60));

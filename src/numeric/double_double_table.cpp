@@ -82,9 +82,18 @@ DoubleDoubleTrigTable make_table() {
 
 DoubleDoubleExpTable make_exp_table() {
   DoubleDoubleExpTable t{};
-  for (int m = -DoubleDoubleExpTable::kHalf; m <= DoubleDoubleExpTable::kHalf; ++m)
-    split(exp(Fifty(m) / 64), t.exp_hi[m + DoubleDoubleExpTable::kHalf],
-          t.exp_lo[m + DoubleDoubleExpTable::kHalf]);
+  // e^(m/2048) by repeated products of e^(+-1/2048) from 1: 710 roundings of
+  // 50 digits, far below the pairs' own 2^-106.
+  constexpr int kHalf = DoubleDoubleExpTable::kHalf;
+  const Fifty up = exp(Fifty(1) / DoubleDoubleExpTable::kSteps), down = 1 / up;
+  Fifty above = 1, below = 1;
+  split(above, t.exp_hi[kHalf], t.exp_lo[kHalf]);
+  for (int m = 1; m <= kHalf; ++m) {
+    above *= up;
+    below *= down;
+    split(above, t.exp_hi[kHalf + m], t.exp_lo[kHalf + m]);
+    split(below, t.exp_hi[kHalf - m], t.exp_lo[kHalf - m]);
+  }
   const Fifty ln2 = boost::math::constants::ln_two<Fifty>();
   // ln 2 is in [2^-1, 2^0).
   const Fifty l1 = rounded_to_bits(ln2, 0, 42);
