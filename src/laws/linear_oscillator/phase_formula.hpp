@@ -70,8 +70,8 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
         start.t_begin = phase.t_begin;
         start.x_begin = phase.x_begin;
         start.v_begin = phase.v_begin;
-        spring_fast_.emplace(start);
-        if (!spring_fast_->usable()) spring_fast_.reset();
+        oscillator_fast_.emplace(start);
+        if (!oscillator_fast_->usable()) oscillator_fast_.reset();
       }
     }
   }
@@ -86,7 +86,7 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
     if constexpr (std::is_same_v<Real, double>) {
       const auto slow = [this](double ti) { return long_double_at(ti); };
       if (seed_fast_) return fast_slip_rows(*seed_fast_, phase_, t, n, out, slow);
-      if (spring_fast_) return fast_slip_rows(*spring_fast_, phase_, t, n, out, slow);
+      if (oscillator_fast_) return fast_slip_rows(*oscillator_fast_, phase_, t, n, out, slow);
     }
     for (std::size_t i = 0; i < n; ++i) out[i] = long_double_at(t[i]);
   }
@@ -111,7 +111,7 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   bool fast_at(const Real& t, BasicState<Real>& state) const {
     if constexpr (std::is_same_v<Real, double>) {
       if (seed_fast_) return fast_slip_row(*seed_fast_, phase_, t, state);
-      return spring_fast_ && fast_slip_row(*spring_fast_, phase_, t, state);
+      return oscillator_fast_ && fast_slip_row(*oscillator_fast_, phase_, t, state);
     } else {
       (void)t;
       (void)state;
@@ -125,7 +125,7 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   std::vector<LinearSlipLaw<Work>> laws_;  // in time order; they point into oscillator_
   // For double, where the CPU allows: the seed's law, or the oscillator's.
   std::optional<DoubleDoubleSlip> seed_fast_;
-  std::optional<DoubleDoubleOscillator> spring_fast_;
+  std::optional<DoubleDoubleOscillator> oscillator_fast_;
 };
 
 }  // namespace frictionref::detail
