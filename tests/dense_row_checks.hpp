@@ -1,11 +1,13 @@
 // What the dense fast paths' tests compare rows with: the double nearest a
-// 50-digit value, rows equal bit for bit, and the rows they sample in a slip.
+// 50-digit value, rows equal bit for bit, and the times and rows they sample
+// in a slip.
 #pragma once
 
 #include <array>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 #include "frictionref/phase.hpp"
 
@@ -27,6 +29,21 @@ inline bool same_row(const State& s, const State& r) {
   return std::memcmp(&s.x, &r.x, sizeof(double)) == 0 &&
          std::memcmp(&s.v, &r.v, sizeof(double)) == 0 &&
          std::memcmp(&s.a, &r.a, sizeof(double)) == 0 && s.t == r.t && s.phase == r.phase;
+}
+
+// The times at which the tests probe a slip's decided values: four spread
+// over it and four crowded towards its stop (where v -> 0 and the bounds are
+// tested hardest), each drawn with one call of unit() (uniform on [0, 1));
+// those that round onto an end of the phase are left out.
+template <class Unit>
+std::vector<double> probe_times(const Phase& phase, Unit& unit) {
+  std::vector<double> times;
+  for (int j = 0; j < 8; ++j) {
+    const double fraction = j < 4 ? unit() : 1 - std::pow(10.0, -12 * unit());
+    const double t = phase.t_begin + fraction * phase.duration();
+    if (t > phase.t_begin && t < phase.t_end) times.push_back(t);
+  }
+  return times;
 }
 
 // A slip's rows at 1/6, 1/2 and 5/6 of its duration, as the tests sample

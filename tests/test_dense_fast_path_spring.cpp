@@ -268,10 +268,7 @@ void decided_values_are_correctly_rounded(Family family) {
   const auto visit = [&](const testing::RandomModel& r, const Phase& phase,
                          const detail::LinearOscillatorFormula<double>& formula) {
     std::optional<ExactSpringSlip> exact;
-    for (int j = 0; j < 8; ++j) {
-      const double fraction = j < 4 ? unit() : 1 - std::pow(10.0, -12 * unit());
-      const double t = phase.t_begin + fraction * phase.duration();
-      if (!(t > phase.t_begin && t < phase.t_end)) continue;
+    for (const double t : testing::probe_times(phase, unit)) {
       ++tried;
       State fast;
       if (!formula.fast_at(t, fast)) continue;
