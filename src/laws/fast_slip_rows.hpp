@@ -1,15 +1,23 @@
 // A slip's dense rows through a fast path (double_double_slip.hpp, or
-// double_double_oscillator.hpp for an underdamped spring), the rows it
-// cannot decide from the long double closed form (Ziv's strategy): the
-// seed's dense output and the general model's.
+// double_double_oscillator.hpp for the general model's linear slips), the
+// rows it cannot decide from the long double closed form (Ziv's strategy):
+// the seed's dense output and the general model's.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
 
 #include "engine/phase_formula.hpp"
+#include "numeric/decided_values.hpp"
 
 namespace frictionref::detail {
+
+// The values the fast path must decide for a row at t: at the phase's own
+// ends x and v are the stored states (slip_state), so the acceleration
+// alone. A slip's first row has v = 0 after a stop, which no bound decides.
+inline unsigned char values_needed(const BasicPhase<double>& phase, double t) {
+  return t == phase.t_begin || t == phase.t_end ? kAccelerationDecided : kAllDecided;
+}
 
 // Fast: DoubleDoubleSlip or DoubleDoubleOscillator (their evaluate()).
 template <class Fast, class LongDoubleAt>
@@ -21,9 +29,11 @@ void fast_slip_rows(const Fast& fast, const BasicPhase<double>& phase, const dou
   for (std::size_t i = 0; i < n; i += kChunk) {
     const std::size_t m = std::min(kChunk, n - i);
     fast.evaluate(t + i, m, x, v, a, decided);
-    for (std::size_t k = 0; k < m; ++k)
-      out[i + k] =
-          decided[k] ? slip_state(phase, t[i + k], x[k], v[k], a[k]) : long_double_at(t[i + k]);
+    for (std::size_t k = 0; k < m; ++k) {
+      const unsigned char needed = values_needed(phase, t[i + k]);
+      out[i + k] = (decided[k] & needed) == needed ? slip_state(phase, t[i + k], x[k], v[k], a[k])
+                                                   : long_double_at(t[i + k]);
+    }
   }
 }
 
@@ -34,8 +44,10 @@ bool fast_slip_row(const Fast& fast, const BasicPhase<double>& phase, double t,
   double x, v, a;
   unsigned char decided;
   fast.evaluate(&t, 1, &x, &v, &a, &decided);
-  if (decided) state = slip_state(phase, t, x, v, a);
-  return decided;
+  const unsigned char needed = values_needed(phase, t);
+  if ((decided & needed) != needed) return false;
+  state = slip_state(phase, t, x, v, a);
+  return true;
 }
 
 }  // namespace frictionref::detail

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 
+#include "numeric/decided_values.hpp"
 #include "numeric/double_double_lanes.hpp"
 
 namespace frictionref::detail::lanes {
@@ -44,15 +45,23 @@ class RangePick {
   Mask in_[kRanges];
 };
 
-// The group's answers: x, v, a and whether each lane is decided.
+// Which of a group's values are decided, lane by lane.
+struct Decisions {
+  Mask position, velocity, acceleration;
+};
+
+// The group's answers: x, v, a and which of them each lane decides (the
+// bits of decided_values.hpp).
 inline void store_group(std::size_t i, std::size_t used, const Pair& position, const Pair& velocity,
-                        const Pair& acceleration, Mask ok, double* x, double* v, double* a,
-                        unsigned char* decided) {
+                        const Pair& acceleration, const Decisions& ok, double* x, double* v,
+                        double* a, unsigned char* decided) {
   for (std::size_t k = 0; k < used; ++k) {
     x[i + k] = position.hi[k];
     v[i + k] = velocity.hi[k];
     a[i + k] = acceleration.hi[k];
-    decided[i + k] = ok[k] != 0;
+    decided[i + k] = static_cast<unsigned char>((ok.position[k] ? kPositionDecided : 0) |
+                                                (ok.velocity[k] ? kVelocityDecided : 0) |
+                                                (ok.acceleration[k] ? kAccelerationDecided : 0));
   }
 }
 

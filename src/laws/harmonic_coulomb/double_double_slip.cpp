@@ -172,9 +172,9 @@ void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, doubl
     const Lanes velocity_error = pick(velocity_error_);
     const Lanes acceleration_error = pick(acceleration_error_);
     const Lanes position_error = pick(position_error_);
-    const Mask ok = in_range & lanes::decided(velocity, velocity_error) &
-                    lanes::decided(acceleration, acceleration_error) &
-                    lanes::decided(position, position_error);
+    const lanes::Decisions ok{in_range & lanes::decided(position, position_error),
+                              in_range & lanes::decided(velocity, velocity_error),
+                              in_range & lanes::decided(acceleration, acceleration_error)};
     lanes::store_group(i, used, position, velocity, acceleration, ok, x, v, a, decided);
   }
 }

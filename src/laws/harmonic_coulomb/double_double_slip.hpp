@@ -45,9 +45,9 @@ class DoubleDoubleSlip {
 
   bool usable() const { return usable_; }
 
-  // For i < n: decided[i] = 1 and x[i], v[i], a[i] the correctly rounded
-  // doubles of the closed form at t[i], or decided[i] = 0 (then x, v, a are
-  // unspecified). Times beyond about 500 radians of forcing phase from the
+  // For i < n: x[i], v[i], a[i] and in decided[i] the bits
+  // (decided_values.hpp) of those that are the correctly rounded doubles of
+  // the closed form at t[i] (the others are unspecified). Times beyond about 500 radians of forcing phase from the
   // start are undecided. Whether a time is decided depends on the start and
   // that time only (not on the other times, nor on the phase's end).
   void evaluate(const double* t, std::size_t n, double* x, double* v, double* a,

@@ -383,10 +383,10 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
       }
     }
     const lanes::RangePick pick(h.hi);
-    ok &= lanes::decided(state.v, pick(velocity_error_)) &
-          lanes::decided(state.a, pick(acceleration_error_)) &
-          lanes::decided(state.x, pick(position_error_));
-    lanes::store_group(i, used, state.x, state.v, state.a, ok, x, v, a, decided);
+    const lanes::Decisions decisions{ok & lanes::decided(state.x, pick(position_error_)),
+                                     ok & lanes::decided(state.v, pick(velocity_error_)),
+                                     ok & lanes::decided(state.a, pick(acceleration_error_))};
+    lanes::store_group(i, used, state.x, state.v, state.a, decisions, x, v, a, decided);
   }
 }
 

@@ -63,9 +63,9 @@ class DoubleDoubleOscillator {
 
   bool usable() const { return usable_; }
 
-  // As DoubleDoubleSlip::evaluate: decided[i] = 1 and x[i], v[i], a[i] the
-  // correctly rounded doubles of the closed form at t[i], or decided[i] = 0.
-  // Undecided besides the rows near rounding boundaries: times before the
+  // As DoubleDoubleSlip::evaluate: x[i], v[i], a[i] and in decided[i] the
+  // bits (decided_values.hpp) of those that are the correctly rounded
+  // doubles of the closed form at t[i]. Undecided besides the rows near rounding boundaries: times before the
   // start or beyond 513 rad of forcing phase from it, rows where a term's
   // phase (q_j h, nu h) leaves 512 rad or a decay's sigma h or kappa h
   // exceeds 708. Whether a

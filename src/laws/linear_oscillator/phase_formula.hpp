@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -33,16 +35,8 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   using Work = work_t<Real>;
 
   LinearOscillatorFormula(const BasicModel<Real>& model, const BasicPhase<Real>& phase)
-      : phase_(phase), oscillator_(model) {
+      : phase_(phase), model_(model) {
     if (phase.kind == PhaseKind::stick) return;
-    const Work omega = oscillator_.omega();
-    const Work tau_end = omega * Work(phase.t_end);
-    laws_.emplace_back(oscillator_, slip_sign(phase.kind), omega * Work(phase.t_begin),
-                       omega * Work(phase.x_begin), Work(phase.v_begin));
-    while (laws_.back().segment_end() < tau_end) {
-      LinearSlipLaw<Work> next = laws_.back().continued_at(laws_.back().segment_end());
-      laws_.push_back(std::move(next));
-    }
     if constexpr (std::is_same_v<Real, double>) {
       if (model.ground_motion || !double_double_lanes_available()) return;
       const int sign = slip_sign(phase.kind);
@@ -94,17 +88,19 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   // The state from the long double laws alone (what the fast path must
   // agree with; tests compare the two).
   BasicState<Real> long_double_at(const Real& t) const {
-    if (laws_.empty()) return rest_state(phase_, t);
-    const Work omega = oscillator_.omega();
+    if (phase_.kind == PhaseKind::stick) return rest_state(phase_, t);
+    const LongDoubleSlip& slip = long_double_slip();
+    const std::vector<LinearSlipLaw<Work>>& laws = slip.laws;
+    const Work omega = slip.oscillator.omega();
     const Work tau = omega * Work(t);
     // The last law starting at or before tau (the first before its start).
     const auto after = std::upper_bound(
-        laws_.begin(), laws_.end(), tau,
+        laws.begin(), laws.end(), tau,
         [](const Work& value, const LinearSlipLaw<Work>& law) { return value < law.tau_begin(); });
     const std::size_t j =
-        after == laws_.begin() ? 0 : static_cast<std::size_t>(after - laws_.begin()) - 1;
-    const auto q = laws_[j].point(tau, false);
-    return slip_state(phase_, t, Real(q.y / omega), Real(q.v), Real(laws_[j].acceleration(q)));
+        after == laws.begin() ? 0 : static_cast<std::size_t>(after - laws.begin()) - 1;
+    const auto q = laws[j].point(tau, false);
+    return slip_state(phase_, t, Real(q.y / omega), Real(q.v), Real(laws[j].acceleration(q)));
   }
 
   // The fast path's answer alone, where it decides (tests).
@@ -120,9 +116,40 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   }
 
  private:
+  // A slip's long double laws: one per segment of the record it crosses
+  // (one without a record), in time order; they point into the oscillator.
+  struct LongDoubleSlip {
+    LongDoubleSlip(const BasicModel<Real>& model, const BasicPhase<Real>& phase)
+        : oscillator(model) {
+      const Work omega = oscillator.omega();
+      const Work tau_end = omega * Work(phase.t_end);
+      laws.emplace_back(oscillator, slip_sign(phase.kind), omega * Work(phase.t_begin),
+                        omega * Work(phase.x_begin), Work(phase.v_begin));
+      while (laws.back().segment_end() < tau_end) {
+        LinearSlipLaw<Work> next = laws.back().continued_at(laws.back().segment_end());
+        laws.push_back(std::move(next));
+      }
+    }
+    LongDoubleSlip(const LongDoubleSlip&) = delete;
+    LongDoubleSlip& operator=(const LongDoubleSlip&) = delete;
+    Oscillator<Work> oscillator;
+    std::vector<LinearSlipLaw<Work>> laws;
+  };
+
+  // Built on first need: with a fast path most slips never need it (the
+  // oscillator's forcing, responses and transition functions cost more
+  // than a phase's rows on the fast path). Once only, also when formulas
+  // are shared between threads.
+  const LongDoubleSlip& long_double_slip() const {
+    std::call_once(long_double_built_,
+                   [this] { long_double_ = std::make_unique<LongDoubleSlip>(model_, phase_); });
+    return *long_double_;
+  }
+
   BasicPhase<Real> phase_;
-  Oscillator<Work> oscillator_;
-  std::vector<LinearSlipLaw<Work>> laws_;  // in time order; they point into oscillator_
+  BasicModel<Real> model_;  // for the long double laws
+  mutable std::once_flag long_double_built_;
+  mutable std::unique_ptr<const LongDoubleSlip> long_double_;
   // For double, where the CPU allows: the seed's law, or the oscillator's.
   std::optional<DoubleDoubleSlip> seed_fast_;
   std::optional<DoubleDoubleOscillator> oscillator_fast_;
