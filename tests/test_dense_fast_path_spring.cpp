@@ -259,6 +259,53 @@ TEST(DoubleDoubleExp, WithinItsBoundOfFiftyDigits) {
             << bound << ")\n";
 }
 
+// The sum of products of the rows' x, v and a (numeric/double_double_sum.hpp),
+// on exact operands: within its bound of the 50-digit sum, with the sums
+// cancelling to a millionth of their terms or less in a third of the cases.
+TEST(DoubleDoubleSum, WithinItsBoundOfFiftyDigits) {
+  if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
+  std::mt19937_64 random(20261128);
+  const auto unit = [&] { return std::ldexp(static_cast<double>(random() >> 11), -53); };
+  // A normalized pair of magnitude about 2^[-20, 20] and either sign.
+  const auto pair = [&](double* p) {
+    p[0] = std::ldexp(unit() + 0.5, static_cast<int>(unit() * 40) - 20) * (unit() < 0.5 ? -1 : 1);
+    p[1] = p[0] * std::ldexp(unit() - 0.5, -53);
+  };
+  Fifty worst = 0;  // the largest error relative to the bound
+  int exact_sums = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const int n = 1 + static_cast<int>(unit() * 12);
+    double start[2], c[24], f[24];
+    pair(start);
+    for (int j = 0; j < n; ++j) {
+      pair(c + 2 * j);
+      pair(f + 2 * j);
+    }
+    Fifty exact = Fifty(start[0]) + Fifty(start[1]);
+    for (int j = 0; j < n - 1; ++j)
+      exact += (Fifty(c[2 * j]) + Fifty(c[2 * j + 1])) * (Fifty(f[2 * j]) + Fifty(f[2 * j + 1]));
+    if (i % 3 == 0) {
+      // The last product cancels the rest to about 2^-20 of it: c = -rest / f.
+      const Fifty last_f = Fifty(f[2 * n - 2]) + Fifty(f[2 * n - 1]);
+      const Fifty want = -exact / last_f * (1 + Fifty(std::ldexp(unit(), -20)));
+      c[2 * n - 2] = static_cast<double>(want);
+      c[2 * n - 1] = static_cast<double>(want - Fifty(c[2 * n - 2]));
+    }
+    exact +=
+        (Fifty(c[2 * n - 2]) + Fifty(c[2 * n - 1])) * (Fifty(f[2 * n - 2]) + Fifty(f[2 * n - 1]));
+    double out[3];
+    detail::double_double_sum(start, c, f, n, out);
+    const Fifty error = abs(Fifty(out[0]) + Fifty(out[1]) - exact);
+    ASSERT_LE(error, Fifty(out[2])) << "case " << i << ", " << n << " terms";
+    ASSERT_EQ(std::fabs(out[1]) <= std::ldexp(std::fabs(out[0]), -53), true) << "not normalized";
+    if (error == 0) ++exact_sums;
+    worst = std::max(worst, error / Fifty(out[2]));
+  }
+  std::cout << "largest error of the sum: " << static_cast<double>(worst) << " of its bound; "
+            << exact_sums << " of 20000 sums exact\n";
+  EXPECT_LT(exact_sums, 20000);  // the bound is tested by inexact sums
+}
+
 // Every value the fast path decides, at times spread over each slip and
 // crowded towards its stop, is the correctly rounded 50-digit value.
 void decided_values_are_correctly_rounded(Family family) {

@@ -7,6 +7,7 @@
 #include "numeric/double_double_exp.hpp"
 #include "numeric/double_double_lanes.hpp"
 #include "numeric/double_double_rows.hpp"
+#include "numeric/double_double_sum.hpp"
 #include "numeric/double_double_table.hpp"
 #include "numeric/double_double_trig.hpp"
 
@@ -30,6 +31,7 @@ using lanes::moderate;
 using lanes::Pair;
 using lanes::quotient;
 using lanes::splat;
+using lanes::Sum;
 using lanes::table_angle;
 using lanes::Trig;
 using lanes::trig_error;
@@ -38,10 +40,16 @@ constexpr double kLargestAngle = 512;  // of q_j h + offset and of nu h
 constexpr double kLargestDecay = 708;  // of sigma h, kappa h: e^-708 is still normal
 
 // The closed form (double_double_oscillator.hpp), one text for the lanes'
-// values (Pair) and for the bounds on their errors (Envelope).
+// values (Pair) and for the bounds on their errors (Envelope): x, v and a
+// each a sum of products (double_double_sum.hpp).
 template <class V>
 struct State {
   V x, v, a;
+};
+template <class V>
+struct Sums {
+  Sum<V> x, v, a;
+  State<V> total() const { return {x.total(), v.total(), a.total()}; }
 };
 template <class V>
 V phase_of(const V& offset, const V& q, const V& h) {
@@ -49,33 +57,49 @@ V phase_of(const V& offset, const V& q, const V& h) {
 }
 // A term's share: its coefficients on sin and cos in x, v and a.
 template <class V>
-void add_share(State<V>& s, const V& x_sin, const V& x_cos, const V& v_sin, const V& v_cos,
+void add_share(Sums<V>& s, const V& x_sin, const V& x_cos, const V& v_sin, const V& v_cos,
                const V& a_sin, const V& a_cos, const V& sine, const V& cosine) {
-  s.x = s.x + (x_sin * sine + x_cos * cosine);
-  s.v = s.v + (v_sin * sine + v_cos * cosine);
-  s.a = s.a + (a_sin * sine + a_cos * cosine);
+  s.x.add(x_sin, sine);
+  s.x.add(x_cos, cosine);
+  s.v.add(v_sin, sine);
+  s.v.add(v_cos, cosine);
+  s.a.add(a_sin, sine);
+  s.a.add(a_cos, cosine);
 }
+// The free oscillation's share: its coefficients on e^{-sigma h} cos nu h
+// and e^{-sigma h} sin nu h.
 template <class V>
-void add_free(State<V>& s, const V& x_cos, const V& x_sin, const V& v_cos, const V& v_sin,
+void add_free(Sums<V>& s, const V& x_cos, const V& x_sin, const V& v_cos, const V& v_sin,
               const V& a_cos, const V& a_sin, const V& decay, const V& cosine, const V& sine) {
-  s.x = s.x + decay * (x_cos * cosine + x_sin * sine);
-  s.v = s.v + decay * (v_cos * cosine + v_sin * sine);
-  s.a = s.a + decay * (a_cos * cosine + a_sin * sine);
+  const V decaying_cos = decay * cosine, decaying_sin = decay * sine;
+  s.x.add(x_cos, decaying_cos);
+  s.x.add(x_sin, decaying_sin);
+  s.v.add(v_cos, decaying_cos);
+  s.v.add(v_sin, decaying_sin);
+  s.a.add(a_cos, decaying_cos);
+  s.a.add(a_sin, decaying_sin);
 }
 
 // A decay's share: its coefficients on e^{-kappa h} in x, v and a.
 template <class V>
-void add_decay(State<V>& s, const V& x, const V& v, const V& a, const V& decay) {
-  s.x = s.x + x * decay;
-  s.v = s.v + v * decay;
-  s.a = s.a + a * decay;
+void add_decay(Sums<V>& s, const V& x, const V& v, const V& a, const V& decay) {
+  s.x.add(x, decay);
+  s.v.add(v, decay);
+  s.a.add(a, decay);
 }
-// The uniformly accelerated motion of a slip without spring or damper:
-// x = x0 + h (x1 + x2 h), v = v0 + v1 h, a = a0.
+// The sums' start, the free motion's polynomial part: x = x0 + x1 h + x2 h^2,
+// v = v0 + v1 h, a = a0 (a slip without spring or damper: a parabola), or
+// its first terms (a damper alone: x0 + x1 h and v0; a spring: x0 alone).
 template <class V>
-State<V> parabola(const V& x0, const V& x1, const V& x2, const V& v0, const V& v1, const V& a0,
-                  const V& h) {
-  return {x0 + h * (x1 + x2 * h), v0 + v1 * h, a0};
+Sums<V> polynomial(int degree, const V& x0, const V& x1, const V& x2, const V& v0, const V& v1,
+                   const V& a0, const V& h) {
+  Sums<V> s{Sum<V>(x0), Sum<V>(v0), Sum<V>(a0)};
+  if (degree >= 1) s.x.add(x1, h);
+  if (degree >= 2) {
+    s.x.add(x2, h * h);
+    s.v.add(v1, h);
+  }
+  return s;
 }
 
 }  // namespace
@@ -85,6 +109,24 @@ void double_double_exp(double hi, double lo, double out[3]) {
   out[0] = first(e.hi);
   out[1] = first(e.lo);
   out[2] = lanes::kExpError;
+}
+
+void double_double_sum(const double* start, const double* c, const double* f, int n,
+                       double out[3]) {
+  const auto pair = [](const double* p) { return Pair{splat(p[0]), splat(p[1])}; };
+  const auto bound = [](const double* p) {
+    return Envelope{{{splat(absolute(p[0]) + absolute(p[1])), splat(0)}, splat(0)}};
+  };
+  Sum<Pair> sum(pair(start));
+  Sum<Envelope> sum_bound(bound(start));
+  for (int j = 0; j < n; ++j) {
+    sum.add(pair(c + 2 * j), pair(f + 2 * j));
+    sum_bound.add(bound(c + 2 * j), bound(f + 2 * j));
+  }
+  const Pair total = sum.total();
+  out[0] = first(total.hi);
+  out[1] = first(total.lo);
+  out[2] = first(sum_bound.total().bound.error);
 }
 
 DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
@@ -287,27 +329,25 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
         {{splat(1 + 0x1p-40), splat(0)},
          (lanes::kExpError + argument.bound.error) * (1 + 0x1p-6) + lanes::kUnderflowSlack}};
   };
-  State<Envelope> bound =
-      free_ == FreeMotion::oscillation
-          ? State<Envelope>{envelope(x_constant_), Envelope{exact(splat(0))},
-                            Envelope{exact(splat(0))}}
-          : parabola(envelope(x_constant_), envelope(x_linear_), envelope(x_square_),
-                     envelope(v_constant_), envelope(v_linear_), envelope(a_constant_), h);
+  Sums<Envelope> sums = polynomial(degree(free_, decays_), envelope(x_constant_),
+                                   envelope(x_linear_), envelope(x_square_), envelope(v_constant_),
+                                   envelope(v_linear_), envelope(a_constant_), h);
   for (int j = 0; j < terms_; ++j) {
     const Term& t = term_[j];
     const Envelope trig = trig_envelope(phase_of(envelope(t.offset), envelope(t.q), h));
-    add_share(bound, envelope(t.x_sin), envelope(t.x_cos), envelope(t.v_sin), envelope(t.v_cos),
+    add_share(sums, envelope(t.x_sin), envelope(t.x_cos), envelope(t.v_sin), envelope(t.v_cos),
               envelope(t.a_sin), envelope(t.a_cos), trig, trig);
   }
   if (free_ == FreeMotion::oscillation) {
     const Envelope free_trig = trig_envelope(envelope(nu_) * h);
-    add_free(bound, envelope(x_cos_), envelope(x_sin_), envelope(v_cos_), envelope(v_sin_),
+    add_free(sums, envelope(x_cos_), envelope(x_sin_), envelope(v_cos_), envelope(v_sin_),
              envelope(a_cos_), envelope(a_sin_), decay_envelope(sigma_), free_trig, free_trig);
   }
   for (int k = 0; k < decays_; ++k) {
     const Decay& d = decay_[k];
-    add_decay(bound, envelope(d.x), envelope(d.v), envelope(d.a), decay_envelope(d.rate));
+    add_decay(sums, envelope(d.x), envelope(d.v), envelope(d.a), decay_envelope(d.rate));
   }
+  const State<Envelope> bound = sums.total();
   for (int k = 0; k < kRanges; ++k) {
     velocity_error_[k] = bound.v.bound.error[k];
     acceleration_error_[k] = bound.a.bound.error[k];
@@ -350,16 +390,14 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
     const Pair tau = lanes::two_prod(omega, time);  // w t exactly
     const Pair h = tau - start;
     Mask ok = (h.hi >= splat(0)) & (h.hi <= splat(kRange[kRanges - 1] * (1 - 0x1p-50)));
-    State<Pair> state =
-        kFree == FreeMotion::oscillation
-            ? State<Pair>{x_constant, Pair{splat(0), splat(0)}, Pair{splat(0), splat(0)}}
-            : parabola(x_constant, x_linear, x_square, v_constant, v_linear, a_constant, h);
+    Sums<Pair> sums = polynomial(degree(kFree, decays_), x_constant, x_linear, x_square, v_constant,
+                                 v_linear, a_constant, h);
     for (int j = 0; j < terms_; ++j) {
       const Term& term = term_[j];
       const Pair phase = phase_of(lanes_of(term.offset), lanes_of(term.q), h);
       ok &= magnitude(phase.hi) <= splat(kLargestAngle);
       const Trig trig = lanes::sin_cos(phase, _mm_set1_epi32(term.base), table);
-      add_share(state, lanes_of(term.x_sin), lanes_of(term.x_cos), lanes_of(term.v_sin),
+      add_share(sums, lanes_of(term.x_sin), lanes_of(term.x_cos), lanes_of(term.v_sin),
                 lanes_of(term.v_cos), lanes_of(term.a_sin), lanes_of(term.a_cos), trig.sin,
                 trig.cos);
     }
@@ -370,7 +408,7 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
       const Pair free_phase = nu * h;
       ok &= magnitude(free_phase.hi) <= splat(kLargestAngle);
       const Trig free = lanes::sin_cos(free_phase, _mm_set1_epi32(0), table);
-      add_free(state, lanes_of(x_cos_), lanes_of(x_sin_), lanes_of(v_cos_), lanes_of(v_sin_),
+      add_free(sums, lanes_of(x_cos_), lanes_of(x_sin_), lanes_of(v_cos_), lanes_of(v_sin_),
                lanes_of(a_cos_), lanes_of(a_sin_), decay, free.cos, free.sin);
     }
     if constexpr (kFree == FreeMotion::decays) {
@@ -378,10 +416,11 @@ void DoubleDoubleOscillator::evaluate_rows(const double* t, std::size_t n, doubl
         const Decay& d = decay_[k];
         const Pair argument = lanes_of(d.rate) * h;
         ok &= argument.hi <= splat(kLargestDecay);
-        add_decay(state, lanes_of(d.x), lanes_of(d.v), lanes_of(d.a),
+        add_decay(sums, lanes_of(d.x), lanes_of(d.v), lanes_of(d.a),
                   lanes::exp_of(-argument, exp_table));
       }
     }
+    const State<Pair> state = sums.total();
     const lanes::RangePick pick(h.hi);
     const lanes::Decisions decisions{ok & lanes::decided(state.x, pick(position_error_)),
                                      ok & lanes::decided(state.v, pick(velocity_error_)),

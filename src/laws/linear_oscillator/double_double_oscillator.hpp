@@ -52,6 +52,12 @@ struct OscillatorSlipStart {
 // only where double_double_lanes_available().
 void double_double_exp(double hi, double lo, double out[3]);
 
+// The sum of products (numeric/double_double_sum.hpp) start + sum_j c_j f_j
+// of n normalized pairs (start[0..1], c[2j..2j+1], f[2j..2j+1]) taken as
+// exact, and its error bound: out = {hi, lo, bound}. For tests of the bound;
+// only where double_double_lanes_available().
+void double_double_sum(const double* start, const double* c, const double* f, int n, double out[3]);
+
 class DoubleDoubleOscillator {
  public:
   // Only where double_double_lanes_available(). Not usable() for what it
@@ -65,11 +71,10 @@ class DoubleDoubleOscillator {
 
   // As DoubleDoubleSlip::evaluate: x[i], v[i], a[i] and in decided[i] the
   // bits (decided_values.hpp) of those that are the correctly rounded
-  // doubles of the closed form at t[i]. Undecided besides the rows near rounding boundaries: times before the
-  // start or beyond 513 rad of forcing phase from it, rows where a term's
-  // phase (q_j h, nu h) leaves 512 rad or a decay's sigma h or kappa h
-  // exceeds 708. Whether a
-  // time is decided depends on the start and that time only.
+  // doubles of the closed form at t[i]. Undecided besides the rows near rounding boundaries: times
+  // before the start or beyond 513 rad of forcing phase from it, rows where a term's phase (q_j h,
+  // nu h) leaves 512 rad or a decay's sigma h or kappa h exceeds 708. Whether a time is decided
+  // depends on the start and that time only.
   void evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
                 unsigned char* decided) const;
 
@@ -89,6 +94,11 @@ class DoubleDoubleOscillator {
   // parabola (neither spring nor damper), or one or two decays (over-damped
   // spring, damper alone).
   enum class FreeMotion { oscillation, parabola, decays };
+  // The degree of the free motion's polynomial part in h: 2 for a parabola,
+  // 1 for a damper alone (one decay and a drift), 0 otherwise.
+  static int degree(FreeMotion free, int decays) {
+    return free == FreeMotion::parabola ? 2 : free == FreeMotion::decays && decays == 1 ? 1 : 0;
+  }
   // The rows of one kind of free motion.
   template <FreeMotion kFree>
   void evaluate_rows(const double* t, std::size_t n, double* x, double* v, double* a,
