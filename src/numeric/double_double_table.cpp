@@ -101,11 +101,6 @@ DoubleDoubleExpTable make_exp_table() {
   t.ln2_2 = static_cast<double>(ln2 - l1);
   t.ln2_3 = static_cast<double>(ln2 - l1 - Fifty(t.ln2_2));
   t.inverse_ln2 = static_cast<double>(1 / ln2);
-  Fifty factorial = 1;
-  for (int n = 0; n <= DoubleDoubleExpTable::kTerms; ++n) {
-    if (n > 0) factorial *= n;
-    split(1 / factorial, t.factorial_hi[n], t.factorial_lo[n]);
-  }
   return t;
 }
 

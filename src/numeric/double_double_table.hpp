@@ -26,18 +26,15 @@ struct DoubleDoubleTrigTable {
 const DoubleDoubleTrigTable& double_double_trig_table();
 
 // The constants of the double-double exponential (double_double_exp.hpp):
-// e^(m/2048) for |m| <= kHalf as pairs (22 KiB), ln 2 split so that k ln2_1 is
-// exact for |k| < 2^11, and 1/n! as pairs for the series. Rounded once from
-// 50 digits.
+// e^(m/2048) for |m| <= kHalf as pairs (22 KiB) and ln 2 split so that k
+// ln2_1 is exact for |k| < 2^11. Rounded once from 50 digits.
 struct DoubleDoubleExpTable {
   static constexpr int kSteps = 2048;  // table step 1/kSteps
   static constexpr int kHalf = 710;    // m in [-710, 710]: |m| / 2048 >= ln 2 / 2
-  static constexpr int kTerms = 8;     // 1/n!, n = 0..kTerms
   alignas(32) double exp_hi[2 * kHalf + 1];
   alignas(32) double exp_lo[2 * kHalf + 1];
   double ln2_1, ln2_2, ln2_3;  // ln 2 = ln2_1 + ln2_2 + ln2_3 + (< 2^-150); ln2_1: 42 bits
   double inverse_ln2;          // 1 / ln 2, rounded
-  double factorial_hi[kTerms + 1], factorial_lo[kTerms + 1];  // 1/n!
 };
 
 const DoubleDoubleExpTable& double_double_exp_table();
