@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "frictionref/model.hpp"
+#include "numeric/integer_power.hpp"
 
 namespace frictionref::detail {
 
@@ -41,8 +42,7 @@ class Forcing {
       bounds_[k] = 0;
       for (const auto& term : terms_) {
         using std::fabs;
-        using std::pow;
-        bounds_[k] += fabs(term.a) * Work(pow(term.q, k));
+        bounds_[k] += fabs(term.a) * integer_power(term.q, k);
       }
     }
   }

@@ -19,6 +19,7 @@
 #include "laws/linear_oscillator/forcing.hpp"
 #include "laws/linear_oscillator/record_forcing.hpp"
 #include "laws/linear_oscillator/transition.hpp"
+#include "numeric/integer_power.hpp"
 
 namespace frictionref::detail {
 
@@ -36,7 +37,6 @@ class Oscillator {
         record_(model.ground_motion, Work(model.omega)),
         transition_(sigma_, rho2_) {
     using std::fabs;
-    using std::pow;
     for (const auto& term : forcing_.terms()) {
       responses_.emplace_back(term.q, transition_);
       // H = 1 / (rho^2 - q^2 + 2 i sigma q); infinite at resonance.
@@ -47,7 +47,7 @@ class Oscillator {
       if (resonant)
         steady_bound4_ = std::numeric_limits<Work>::infinity();
       else
-        steady_bound4_ += fabs(term.a) * steady_.back().abs() * Work(pow(term.q, 4));
+        steady_bound4_ += fabs(term.a) * steady_.back().abs() * integer_power(term.q, 4);
     }
   }
 
