@@ -67,17 +67,11 @@ void add_share(Sums<V>& s, const V& x_sin, const V& x_cos, const V& v_sin, const
   s.a.add(a_cos, cosine);
 }
 // The free oscillation's share: its coefficients on e^{-sigma h} cos nu h
-// and e^{-sigma h} sin nu h.
+// and e^{-sigma h} sin nu h, a term's share on those products.
 template <class V>
 void add_free(Sums<V>& s, const V& x_cos, const V& x_sin, const V& v_cos, const V& v_sin,
               const V& a_cos, const V& a_sin, const V& decay, const V& cosine, const V& sine) {
-  const V decaying_cos = decay * cosine, decaying_sin = decay * sine;
-  s.x.add(x_cos, decaying_cos);
-  s.x.add(x_sin, decaying_sin);
-  s.v.add(v_cos, decaying_cos);
-  s.v.add(v_sin, decaying_sin);
-  s.a.add(a_cos, decaying_cos);
-  s.a.add(a_sin, decaying_sin);
+  add_share(s, x_sin, x_cos, v_sin, v_cos, a_sin, a_cos, decay * sine, decay * cosine);
 }
 
 // A decay's share: its coefficients on e^{-kappa h} in x, v and a.
