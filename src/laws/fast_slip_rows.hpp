@@ -12,11 +12,13 @@
 
 namespace frictionref::detail {
 
-// The values the fast path must decide for a row at t: at the phase's own
-// ends x and v are the stored states (slip_state), so the acceleration
-// alone. A slip's first row has v = 0 after a stop, which no bound decides.
-inline unsigned char values_needed(const BasicPhase<double>& phase, double t) {
-  return t == phase.t_begin || t == phase.t_end ? kAccelerationDecided : kAllDecided;
+// Whether the fast path decides the row at t: all its values, or at the
+// phase's own ends, where x and v are the stored states (slip_state), the
+// acceleration alone (a slip's first row has v = 0 after a stop, which no
+// bound decides).
+inline bool row_decided(unsigned char decided, const BasicPhase<double>& phase, double t) {
+  return decided == kAllDecided ||
+         ((decided & kAccelerationDecided) && (t == phase.t_begin || t == phase.t_end));
 }
 
 // Fast: DoubleDoubleSlip or DoubleDoubleOscillator (their evaluate()).
@@ -29,11 +31,10 @@ void fast_slip_rows(const Fast& fast, const BasicPhase<double>& phase, const dou
   for (std::size_t i = 0; i < n; i += kChunk) {
     const std::size_t m = std::min(kChunk, n - i);
     fast.evaluate(t + i, m, x, v, a, decided);
-    for (std::size_t k = 0; k < m; ++k) {
-      const unsigned char needed = values_needed(phase, t[i + k]);
-      out[i + k] = (decided[k] & needed) == needed ? slip_state(phase, t[i + k], x[k], v[k], a[k])
-                                                   : long_double_at(t[i + k]);
-    }
+    for (std::size_t k = 0; k < m; ++k)
+      out[i + k] = row_decided(decided[k], phase, t[i + k])
+                       ? slip_state(phase, t[i + k], x[k], v[k], a[k])
+                       : long_double_at(t[i + k]);
   }
 }
 
@@ -44,8 +45,7 @@ bool fast_slip_row(const Fast& fast, const BasicPhase<double>& phase, double t,
   double x, v, a;
   unsigned char decided;
   fast.evaluate(&t, 1, &x, &v, &a, &decided);
-  const unsigned char needed = values_needed(phase, t);
-  if ((decided & needed) != needed) return false;
+  if (!row_decided(decided, phase, t)) return false;
   state = slip_state(phase, t, x, v, a);
   return true;
 }

@@ -55,13 +55,14 @@ struct Decisions {
 inline void store_group(std::size_t i, std::size_t used, const Pair& position, const Pair& velocity,
                         const Pair& acceleration, const Decisions& ok, double* x, double* v,
                         double* a, unsigned char* decided) {
+  const Mask bits = (ok.position & static_cast<long long>(kPositionDecided)) |
+                    (ok.velocity & static_cast<long long>(kVelocityDecided)) |
+                    (ok.acceleration & static_cast<long long>(kAccelerationDecided));
   for (std::size_t k = 0; k < used; ++k) {
     x[i + k] = position.hi[k];
     v[i + k] = velocity.hi[k];
     a[i + k] = acceleration.hi[k];
-    decided[i + k] = static_cast<unsigned char>((ok.position[k] ? kPositionDecided : 0) |
-                                                (ok.velocity[k] ? kVelocityDecided : 0) |
-                                                (ok.acceleration[k] ? kAccelerationDecided : 0));
+    decided[i + k] = static_cast<unsigned char>(bits[k]);
   }
 }
 
