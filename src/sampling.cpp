@@ -66,7 +66,7 @@ bool UniformSampler::finish() {
 bool UniformSampler::advance_to(double t) {
   while (t >= phase_.t_end && phase_.t_end < options_.t_end) {
     if (!engine_.next(phase_)) return false;
-    law_.emplace(model_, phase_);
+    law_ = law_->for_phase(phase_);
   }
   return true;
 }
@@ -145,7 +145,7 @@ std::vector<State> sample_at(const Model& model, const std::vector<double>& time
         throw std::runtime_error("exact engine: " + engine.summary().message);
       moved = true;
     }
-    if (moved) law.emplace(model, phase);
+    if (moved) law = law->for_phase(phase);
     // This time and the following ones in the same phase, evaluated together.
     std::size_t end = i + 1;
     while (end < times.size() && (times[end] < phase.t_end || phase.t_end >= last)) ++end;

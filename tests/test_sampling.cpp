@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/model.hpp"
 #include "frictionref/sampling.hpp"
+#include "hand_made_record.hpp"
 
 namespace frictionref {
 namespace {
@@ -69,9 +71,9 @@ struct GridCase {
 // not a multiple (10 / 0.3, 4.5 + 3 / 0.25 shifted), a negative t0, and a
 // horizon a hair (below 1e-9 dt) beyond a grid point.
 const GridCase kGridCases[] = {
-    {0.0, 30.0, 0.1},  {0.0, 0.07, 0.01},  {0.0, 2.1, 0.7},      {0.0, 1.1, 0.1},
-    {0.25, 10.0, 0.3}, {-3.0, 4.5, 0.25},  {0.0, 3.0 + 1e-12, 1.0}, {1.0, 8.0, 0.5},
-    {0.0, 9.87, 1.0},
+    {0.0, 30.0, 0.1},        {0.0, 0.07, 0.01}, {0.0, 2.1, 0.7},
+    {0.0, 1.1, 0.1},         {0.25, 10.0, 0.3}, {-3.0, 4.5, 0.25},
+    {0.0, 3.0 + 1e-12, 1.0}, {1.0, 8.0, 0.5},   {0.0, 9.87, 1.0},
 };
 
 TEST(UniformSampler, RowsAreExactGridTimesThenTEndOnce) {
@@ -171,10 +173,10 @@ void check_event_rows(const Model& model, const GridOptions& grid) {
     EXPECT_EQ(row->phase, next.kind) << "boundary " << k << " t=" << row->t;
     EXPECT_EQ(row->x, next.x_begin);
     EXPECT_EQ(row->v, next.v_begin);
-    const double a = s == 0 ? 0.0
-                            : (model.amplitude * std::sin(model.omega * row->t) -
-                               s * model.friction) /
-                                  model.mass;
+    const double a =
+        s == 0
+            ? 0.0
+            : (model.amplitude * std::sin(model.omega * row->t) - s * model.friction) / model.mass;
     EXPECT_NEAR(row->a, a, 1e-14) << "boundary " << k << " t=" << row->t;
   }
   // The last row: t_end in the last phase with its stored end state.
@@ -231,11 +233,10 @@ TEST(UniformSamplerEvents, BoundaryOnAGridPointAppearsOnceWithTheNewPhase) {
   for (bool events : {true, false}) {
     SCOPED_TRACE(events ? "with events" : "without events");
     const std::vector<State> rows = all_rows(model, {20.0, dt, events});
-    EXPECT_EQ(std::count_if(rows.begin(), rows.end(),
-                            [&](const State& s) { return s.t == t_stop; }),
-              1);
-    const auto row = std::find_if(rows.begin(), rows.end(),
-                                  [&](const State& s) { return s.t == t_stop; });
+    EXPECT_EQ(
+        std::count_if(rows.begin(), rows.end(), [&](const State& s) { return s.t == t_stop; }), 1);
+    const auto row =
+        std::find_if(rows.begin(), rows.end(), [&](const State& s) { return s.t == t_stop; });
     ASSERT_NE(row, rows.end());
     // The new phase (stick) and its acceleration 0, not the slip's
     // sin(t_stop) - 0.7 (about -0.78).
@@ -264,11 +265,11 @@ TEST(UniformSamplerEvents, ReversalOnAGridPointCarriesTheRightLimit) {
   for (bool events : {true, false}) {
     SCOPED_TRACE(events ? "with events" : "without events");
     const std::vector<State> rows = all_rows(model, {30.0, dt, events});
-    const auto n = std::count_if(rows.begin(), rows.end(),
-                                 [&](const State& s) { return s.t == t_rev; });
+    const auto n =
+        std::count_if(rows.begin(), rows.end(), [&](const State& s) { return s.t == t_rev; });
     EXPECT_EQ(n, 1);
-    const auto row = std::find_if(rows.begin(), rows.end(),
-                                  [&](const State& s) { return s.t == t_rev; });
+    const auto row =
+        std::find_if(rows.begin(), rows.end(), [&](const State& s) { return s.t == t_rev; });
     ASSERT_NE(row, rows.end());
     EXPECT_EQ(row->phase, PhaseKind::slip_backward);
     EXPECT_NEAR(row->a, std::sin(t_rev) + 0.3, 1e-15);
@@ -278,6 +279,60 @@ TEST(UniformSamplerEvents, ReversalOnAGridPointCarriesTheRightLimit) {
 }
 
 // ---- sample_at -------------------------------------------------------------
+
+// An evaluator reached by for_phase from the one before (as the samplers
+// walk a model's phases, sharing the model's own laws) gives the states of an
+// evaluator built afresh, bit for bit, in every family: the seed's, the
+// general model's (with a fast path, over-damped, and with a record) and the
+// rigid block's on a record.
+TEST(PhaseEvaluator, ForPhaseGivesTheStatesOfAFreshEvaluator) {
+  std::vector<double> record_t, record_a;
+  for (int i = 0; i <= 300; ++i) {
+    record_t.push_back(0.01 * i);
+    record_a.push_back(3 * std::sin(0.37 * i) + std::sin(1.3 * i));
+  }
+  std::vector<Model> models(5);
+  models[0].friction = 0.3;
+  models[1].friction = 0.4;
+  models[1].static_friction = 0.6;
+  models[1].stiffness = 1;
+  models[1].damping = 0.1;
+  models[1].harmonics.push_back({0.4, 2.5, 0.3});
+  models[2].friction = 0.3;
+  models[2].stiffness = 1;
+  models[2].damping = 3;
+  for (int k : {3, 4}) {
+    models[k].amplitude = 0;
+    models[k].friction = 1;
+    models[k].ground_motion = testing::record(record_t, record_a);
+  }
+  models[4].stiffness = 20;
+  const auto same = [](const State& a, const State& b) {
+    return std::memcmp(&a.x, &b.x, sizeof(double)) == 0 &&
+           std::memcmp(&a.v, &b.v, sizeof(double)) == 0 &&
+           std::memcmp(&a.a, &b.a, sizeof(double)) == 0 && a.t == b.t && a.phase == b.phase;
+  };
+  for (std::size_t k = 0; k < models.size(); ++k) {
+    const double t_end = models[k].ground_motion ? 3 : 40;
+    ExactEngine engine(models[k], t_end);
+    Phase phase;
+    ASSERT_TRUE(engine.next(phase));
+    PhaseEvaluator walked(models[k], phase);
+    int phases = 0, slips = 0;
+    do {
+      if (phases > 0) walked = walked.for_phase(phase);
+      const PhaseEvaluator fresh(models[k], phase);
+      for (int j = 0; j <= 8; ++j) {
+        const double t = j == 8 ? phase.t_end : phase.t_begin + phase.duration() * j / 8;
+        ASSERT_TRUE(same(walked(t), fresh(t)))
+            << "model " << k << " phase " << phases << " t=" << t;
+      }
+      ++phases;
+      slips += phase.kind != PhaseKind::stick;
+    } while (engine.next(phase));
+    EXPECT_GT(slips, 3) << "model " << k;
+  }
+}
 
 TEST(SampleAt, AgreesWithSolutionStateAt) {
   const Model model = seed_model(0.7, 0.0, 0.0, 1.5);
@@ -322,9 +377,7 @@ TEST(SampleAt, AtPhaseBoundariesGivesTheNewPhase) {
   EXPECT_EQ(states.back().v, solution.phases.back().v_end);
 }
 
-TEST(SampleAt, EmptyTimesGiveNoStates) {
-  EXPECT_TRUE(sample_at(seed_model(0.3), {}).empty());
-}
+TEST(SampleAt, EmptyTimesGiveNoStates) { EXPECT_TRUE(sample_at(seed_model(0.3), {}).empty()); }
 
 TEST(SampleAt, SingleTimeEqualToT0) {
   // Moving forward at t0 = 1 (v0 = 1): the first phase is slip+ and a = sin(1) - 0.3.
@@ -353,8 +406,9 @@ TEST(SampleAt, SingleTimeEqualToT0) {
 }
 
 TEST(SampleAt, DecreasingTimesRejected) {
-  const InvalidInput error =
-      expect_invalid([] { sample_at(seed_model(0.3), {0.0, 2.0, 1.0, 3.0}); });
+  const InvalidInput error = expect_invalid([] {
+    sample_at(seed_model(0.3), {0.0, 2.0, 1.0, 3.0});
+  });
   EXPECT_EQ(error.parameter(), "times[2]");
   EXPECT_NE(error.rule().find(">="), std::string::npos);
 }
@@ -399,9 +453,13 @@ TEST(GridOptionsValidate, TEndMustBeFiniteAndAfterT0) {
     const InvalidInput error = expect_invalid([&] { GridOptions{bad, 0.1, false}.validate(0.0); });
     EXPECT_EQ(error.parameter(), "t_end") << bad;
   }
-  EXPECT_EQ(expect_invalid([] { GridOptions{5.0, 0.1, false}.validate(5.0); }).parameter(),
+  EXPECT_EQ(expect_invalid([] {
+              GridOptions{5.0, 0.1, false}.validate(5.0);
+            }).parameter(),
             "t_end");
-  EXPECT_EQ(expect_invalid([] { GridOptions{4.0, 0.1, false}.validate(5.0); }).parameter(),
+  EXPECT_EQ(expect_invalid([] {
+              GridOptions{4.0, 0.1, false}.validate(5.0);
+            }).parameter(),
             "t_end");
   EXPECT_NO_THROW((GridOptions{-4.0, 0.1, false}.validate(-5.0)));
 }
@@ -418,7 +476,9 @@ TEST(GridOptionsValidate, DtMustBeFinitePositiveAndMoveT) {
     EXPECT_EQ(error.rule(), "must be > 0") << bad;
   }
   // 1e9 + 1e-9 == 1e9: the grid would not move.
-  EXPECT_EQ(expect_invalid([] { GridOptions{1e9 + 1, 1e-9, false}.validate(1e9); }).parameter(),
+  EXPECT_EQ(expect_invalid([] {
+              GridOptions{1e9 + 1, 1e-9, false}.validate(1e9);
+            }).parameter(),
             "dt");
   // Also when only t_end is large.
   EXPECT_EQ(expect_invalid([] { GridOptions{1e9, 1e-9, false}.validate(0.0); }).parameter(), "dt");

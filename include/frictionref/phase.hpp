@@ -60,7 +60,14 @@ class BasicPhaseEvaluator {
   // double (docs/theory.md 10 evaluates four times at once).
   void operator()(const Real* times, std::size_t count, BasicState<Real>* states) const;
 
+  // The evaluator of another phase of the same model: the same states as
+  // BasicPhaseEvaluator(model, phase), sharing what depends on the model
+  // alone (the general model's long double oscillator, built on first
+  // need), so cheaper where a sampler visits a model's phases in turn.
+  BasicPhaseEvaluator for_phase(const BasicPhase<Real>& phase) const;
+
  private:
+  explicit BasicPhaseEvaluator(std::unique_ptr<const detail::PhaseFormula<Real>> formula);
   std::unique_ptr<const detail::PhaseFormula<Real>> formula_;
 };
 

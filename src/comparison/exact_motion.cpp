@@ -33,7 +33,7 @@ ExactMotion exact_motion(const Model& model, const std::vector<double>& t) {
       if (!next()) throw std::runtime_error("exact engine: " + engine.summary().message);
       moved = true;
     }
-    if (moved) law.emplace(model, phase);
+    if (moved) law = law->for_phase(phase);
     // This time and the following ones in the same phase, evaluated together
     // (four at a time on the seed's dense fast path), as sample_at() does.
     std::size_t end = i + 1;

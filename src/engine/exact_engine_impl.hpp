@@ -122,6 +122,15 @@ BasicPhaseEvaluator<Real>::BasicPhaseEvaluator(const BasicModel<Real>& model,
                                                const BasicPhase<Real>& phase)
     : formula_(detail::make_phase_formula(model, phase)) {}
 template <class Real>
+BasicPhaseEvaluator<Real>::BasicPhaseEvaluator(
+    std::unique_ptr<const detail::PhaseFormula<Real>> formula)
+    : formula_(std::move(formula)) {}
+template <class Real>
+BasicPhaseEvaluator<Real> BasicPhaseEvaluator<Real>::for_phase(
+    const BasicPhase<Real>& phase) const {
+  return BasicPhaseEvaluator(formula_->for_phase(phase));
+}
+template <class Real>
 BasicPhaseEvaluator<Real>::~BasicPhaseEvaluator() = default;
 template <class Real>
 BasicPhaseEvaluator<Real>::BasicPhaseEvaluator(BasicPhaseEvaluator&&) noexcept = default;

@@ -20,6 +20,10 @@ class PhaseFormula {
   virtual void at_many(const Real* t, std::size_t n, BasicState<Real>* out) const {
     for (std::size_t i = 0; i < n; ++i) out[i] = at(t[i]);
   }
+  // The formula of another phase of the same model, sharing what depends on
+  // the model alone (a sampler's next phase).
+  virtual std::unique_ptr<const PhaseFormula<Real>> for_phase(
+      const BasicPhase<Real>& phase) const = 0;
 };
 
 // The rules every family's dense output shares. A stick holds its rest

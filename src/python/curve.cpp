@@ -87,7 +87,7 @@ py::array at_times(const PyModel& model, py::handle t_object) {
         if (!engine.next(phase)) break;
         moved = true;
       }
-      if (moved) law.emplace(model.model, phase);
+      if (moved) law = law->for_phase(phase);
       std::size_t count = 0;
       do {
         batch_times[count] = std::min(times[order[k + count]], phase.t_end);

@@ -7,13 +7,14 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <type_traits>
 
 #include "engine/phase_formula.hpp"
 #include "engine/scalar_traits.hpp"
-#include "laws/harmonic_coulomb/double_double_slip.hpp"
 #include "laws/fast_slip_rows.hpp"
+#include "laws/harmonic_coulomb/double_double_slip.hpp"
 #include "laws/harmonic_coulomb/phase_law.hpp"
 
 namespace frictionref::detail {
@@ -24,7 +25,8 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
   using Work = work_t<Real>;
 
   HarmonicCoulombFormula(const BasicModel<Real>& model, const BasicPhase<Real>& phase)
-      : phase_(phase),
+      : model_(model),
+        phase_(phase),
         omega_(model.omega),
         law_(model, phase.kind, omega_ * Work(phase.t_begin), Work(phase.x_begin),
              Work(phase.v_begin)) {
@@ -36,6 +38,11 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
         if (!fast_->usable()) fast_.reset();
       }
     }
+  }
+
+  std::unique_ptr<const PhaseFormula<Real>> for_phase(
+      const BasicPhase<Real>& phase) const override {
+    return std::make_unique<HarmonicCoulombFormula>(model_, phase);
   }
 
   BasicState<Real> at(const Real& t) const override {
@@ -75,6 +82,7 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
   }
 
  private:
+  BasicModel<Real> model_;
   BasicPhase<Real> phase_;
   Work omega_;
   PhaseLaw<Work> law_;

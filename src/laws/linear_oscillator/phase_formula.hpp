@@ -25,6 +25,7 @@
 #include "laws/harmonic_coulomb/double_double_slip.hpp"
 #include "laws/linear_oscillator/double_double_oscillator.hpp"
 #include "laws/linear_oscillator/oscillator.hpp"
+#include "laws/linear_oscillator/shared_oscillator.hpp"
 #include "laws/linear_oscillator/slip_law.hpp"
 
 namespace frictionref::detail {
@@ -35,8 +36,13 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   using Work = work_t<Real>;
 
   LinearOscillatorFormula(const BasicModel<Real>& model, const BasicPhase<Real>& phase)
-      : phase_(phase), model_(model) {
+      : LinearOscillatorFormula(std::make_shared<const SharedOscillator<Real>>(model), phase) {}
+
+  LinearOscillatorFormula(std::shared_ptr<const SharedOscillator<Real>> shared,
+                          const BasicPhase<Real>& phase)
+      : phase_(phase), shared_(std::move(shared)) {
     if (phase.kind == PhaseKind::stick) return;
+    const BasicModel<Real>& model = shared_->model();
     if constexpr (std::is_same_v<Real, double>) {
       if (model.ground_motion || !double_double_lanes_available()) return;
       const int sign = slip_sign(phase.kind);
@@ -70,6 +76,11 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
     }
   }
 
+  std::unique_ptr<const PhaseFormula<Real>> for_phase(
+      const BasicPhase<Real>& phase) const override {
+    return std::make_unique<LinearOscillatorFormula>(shared_, phase);
+  }
+
   BasicState<Real> at(const Real& t) const override {
     BasicState<Real> state;
     at_many(&t, 1, &state);
@@ -89,9 +100,8 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   // agree with; tests compare the two).
   BasicState<Real> long_double_at(const Real& t) const {
     if (phase_.kind == PhaseKind::stick) return rest_state(phase_, t);
-    const LongDoubleSlip& slip = long_double_slip();
-    const std::vector<LinearSlipLaw<Work>>& laws = slip.laws;
-    const Work omega = slip.oscillator.omega();
+    const std::vector<LinearSlipLaw<Work>>& laws = slip_laws();
+    const Work omega = shared_->oscillator().omega();
     const Work tau = omega * Work(t);
     // The last law starting at or before tau (the first before its start).
     const auto after = std::upper_bound(
@@ -116,40 +126,29 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   }
 
  private:
-  // A slip's long double laws: one per segment of the record it crosses
-  // (one without a record), in time order; they point into the oscillator.
-  struct LongDoubleSlip {
-    LongDoubleSlip(const BasicModel<Real>& model, const BasicPhase<Real>& phase)
-        : oscillator(model) {
+  // The slip's long double laws, one per segment of the record it crosses
+  // (one without a record), in time order, built on first need (once, also
+  // when formulas are used from several threads); they point into the
+  // shared oscillator.
+  const std::vector<LinearSlipLaw<Work>>& slip_laws() const {
+    std::call_once(laws_built_, [this] {
+      const Oscillator<Work>& oscillator = shared_->oscillator();
       const Work omega = oscillator.omega();
-      const Work tau_end = omega * Work(phase.t_end);
-      laws.emplace_back(oscillator, slip_sign(phase.kind), omega * Work(phase.t_begin),
-                        omega * Work(phase.x_begin), Work(phase.v_begin));
-      while (laws.back().segment_end() < tau_end) {
-        LinearSlipLaw<Work> next = laws.back().continued_at(laws.back().segment_end());
-        laws.push_back(std::move(next));
+      const Work tau_end = omega * Work(phase_.t_end);
+      laws_.emplace_back(oscillator, slip_sign(phase_.kind), omega * Work(phase_.t_begin),
+                         omega * Work(phase_.x_begin), Work(phase_.v_begin));
+      while (laws_.back().segment_end() < tau_end) {
+        LinearSlipLaw<Work> next = laws_.back().continued_at(laws_.back().segment_end());
+        laws_.push_back(std::move(next));
       }
-    }
-    LongDoubleSlip(const LongDoubleSlip&) = delete;
-    LongDoubleSlip& operator=(const LongDoubleSlip&) = delete;
-    Oscillator<Work> oscillator;
-    std::vector<LinearSlipLaw<Work>> laws;
-  };
-
-  // Built on first need: with a fast path most slips never need it (the
-  // oscillator's forcing, responses and transition functions cost more
-  // than a phase's rows on the fast path). Once only, also when formulas
-  // are shared between threads.
-  const LongDoubleSlip& long_double_slip() const {
-    std::call_once(long_double_built_,
-                   [this] { long_double_ = std::make_unique<LongDoubleSlip>(model_, phase_); });
-    return *long_double_;
+    });
+    return laws_;
   }
 
   BasicPhase<Real> phase_;
-  BasicModel<Real> model_;  // for the long double laws
-  mutable std::once_flag long_double_built_;
-  mutable std::unique_ptr<const LongDoubleSlip> long_double_;
+  std::shared_ptr<const SharedOscillator<Real>> shared_;  // the model and its oscillator
+  mutable std::once_flag laws_built_;
+  mutable std::vector<LinearSlipLaw<Work>> laws_;
   // For double, where the CPU allows: the seed's law, or the oscillator's.
   std::optional<DoubleDoubleSlip> seed_fast_;
   std::optional<DoubleDoubleOscillator> oscillator_fast_;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -21,7 +22,8 @@ class RigidBlockRecordFormula final : public PhaseFormula<Real> {
   using Net = NetAcceleration<Work>;
 
   RigidBlockRecordFormula(const BasicModel<Real>& model, const BasicPhase<Real>& phase)
-      : phase_(phase),
+      : model_(model),
+        phase_(phase),
         net_(model.ground_motion, Work(model.omega), Work(model.force_offset) / Work(model.mass)),
         omega_(model.omega),
         sign_(phase.kind == PhaseKind::slip_forward ? 1 : -1) {
@@ -44,6 +46,11 @@ class RigidBlockRecordFormula final : public PhaseFormula<Real> {
     }
   }
 
+  std::unique_ptr<const PhaseFormula<Real>> for_phase(
+      const BasicPhase<Real>& phase) const override {
+    return std::make_unique<RigidBlockRecordFormula>(model_, phase);
+  }
+
   BasicState<Real> at(const Real& t) const override {
     if (pieces_.empty()) return rest_state(phase_, t);  // a stick
     const auto [piece, h] = piece_at(t);
@@ -60,6 +67,7 @@ class RigidBlockRecordFormula final : public PhaseFormula<Real> {
     return {pieces_[j], (tau - starts_[j]) / omega_};
   }
 
+  BasicModel<Real> model_;
   BasicPhase<Real> phase_;
   Net net_;
   Work omega_;
