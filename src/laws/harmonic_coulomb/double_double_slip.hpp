@@ -47,9 +47,10 @@ class DoubleDoubleSlip {
 
   // For i < n: x[i], v[i], a[i] and in decided[i] the bits
   // (decided_values.hpp) of those that are the correctly rounded doubles of
-  // the closed form at t[i] (the others are unspecified). Times beyond about 500 radians of forcing phase from the
-  // start are undecided. Whether a time is decided depends on the start and
-  // that time only (not on the other times, nor on the phase's end).
+  // the closed form at t[i] (the others are unspecified). Times beyond about
+  // 500 radians of forcing phase from the start are undecided. Whether a
+  // time is decided depends on the start and that time only (not on the
+  // other times, nor on the phase's end).
   void evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
                 unsigned char* decided) const;
 

@@ -107,15 +107,13 @@ void double_double_exp(double hi, double lo, double out[3]) {
 
 void double_double_sum(const double* start, const double* c, const double* f, int n,
                        double out[3]) {
-  const auto pair = [](const double* p) { return Pair{splat(p[0]), splat(p[1])}; };
-  const auto bound = [](const double* p) {
-    return Envelope{{{splat(absolute(p[0]) + absolute(p[1])), splat(0)}, splat(0)}};
-  };
-  Sum<Pair> sum(pair(start));
-  Sum<Envelope> sum_bound(bound(start));
+  // Each pair as an exact constant: its lanes and its envelope.
+  const auto constant = [](const double* p) { return DoubleDoubleConstant{p[0], p[1], 0}; };
+  Sum<Pair> sum(lanes_of(constant(start)));
+  Sum<Envelope> sum_bound(envelope(constant(start)));
   for (int j = 0; j < n; ++j) {
-    sum.add(pair(c + 2 * j), pair(f + 2 * j));
-    sum_bound.add(bound(c + 2 * j), bound(f + 2 * j));
+    sum.add(lanes_of(constant(c + 2 * j)), lanes_of(constant(f + 2 * j)));
+    sum_bound.add(envelope(constant(c + 2 * j)), envelope(constant(f + 2 * j)));
   }
   const Pair total = sum.total();
   out[0] = first(total.hi);

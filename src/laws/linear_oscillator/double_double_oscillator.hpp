@@ -71,9 +71,10 @@ class DoubleDoubleOscillator {
 
   // As DoubleDoubleSlip::evaluate: x[i], v[i], a[i] and in decided[i] the
   // bits (decided_values.hpp) of those that are the correctly rounded
-  // doubles of the closed form at t[i]. Undecided besides the rows near rounding boundaries: times
-  // before the start or beyond 513 rad of forcing phase from it, rows where a term's phase (q_j h,
-  // nu h) leaves 512 rad or a decay's sigma h or kappa h exceeds 708. Whether a time is decided
+  // doubles of the closed form at t[i]. Undecided besides the rows near
+  // rounding boundaries: times before the start or beyond 513 rad of forcing
+  // phase from it, rows where a term's phase (q_j h, nu h) leaves 512 rad or
+  // a decay's sigma h or kappa h exceeds 708. Whether a time is decided
   // depends on the start and that time only.
   void evaluate(const double* t, std::size_t n, double* x, double* v, double* a,
                 unsigned char* decided) const;
