@@ -1,12 +1,16 @@
 // What the dense fast paths' tests compare rows with: the double nearest a
-// 50-digit value, rows equal bit for bit, and the times and rows they sample
-// in a slip.
+// 50-digit value, rows equal bit for bit, the times and rows they sample in a
+// slip, and the checks of a slip's end rows.
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <array>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <iostream>
 #include <vector>
 
 #include "frictionref/phase.hpp"
@@ -66,6 +70,50 @@ std::array<SlipRow, 3> slip_rows(const Formula& formula, const Phase& phase) {
     rows[j] = {times[j], batch[j], formula.long_double_at(times[j]),
                times[j] > phase.t_begin && times[j] < phase.t_end};
   return rows;
+}
+
+// The end-row tests' counts: rows, those the fast path decides, and those of
+// them unlike the long double path's.
+struct EndRowCounts {
+  std::uint64_t rows = 0, decided = 0, differing = 0;
+};
+
+// A slip's rows at its own ends (a curve's event rows), through the
+// formula's batch, checked: x and v are the stored states; where the fast
+// path decides the row (on its acceleration alone there), the batch gives the
+// fast row and its acceleration is exact_a(t), the correctly rounded
+// 50-digit value; elsewhere the batch gives the long double path's row.
+// describe() names the model in a failure's message.
+template <class Formula, class ExactA, class Describe>
+void check_end_rows(const Formula& formula, const Phase& phase, const ExactA& exact_a,
+                    const Describe& describe, EndRowCounts& counts) {
+  const double times[2] = {phase.t_begin, phase.t_end};
+  State batch[2];
+  formula.at_many(times, 2, batch);
+  for (int j = 0; j < 2; ++j) {
+    ++counts.rows;
+    const State slow = formula.long_double_at(times[j]);
+    ASSERT_EQ(batch[j].x, j ? phase.x_end : phase.x_begin) << describe();
+    ASSERT_EQ(batch[j].v, j ? phase.v_end : phase.v_begin) << describe();
+    State fast;
+    if (!formula.fast_at(times[j], fast)) {
+      ASSERT_TRUE(same_row(batch[j], slow)) << describe() << " t=" << times[j];
+      continue;
+    }
+    ++counts.decided;
+    ASSERT_TRUE(same_row(batch[j], fast)) << describe() << " t=" << times[j];
+    ASSERT_EQ(fast.a, exact_a(times[j])) << describe() << " t=" << times[j];
+    counts.differing += !same_row(fast, slow);
+  }
+}
+
+// The counts printed, and the floor every end-row test holds them to: over
+// 3,000 rows, more than half of them decided.
+inline void expect_end_rows_tested(const EndRowCounts& counts) {
+  std::cout << counts.decided << " of " << counts.rows << " end rows decided by the fast path, "
+            << counts.differing << " of them not the long double path's\n";
+  EXPECT_GT(counts.rows, 3000u);
+  EXPECT_GT(counts.decided, counts.rows / 2);
 }
 
 }  // namespace frictionref::testing

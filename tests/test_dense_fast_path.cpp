@@ -148,33 +148,16 @@ TEST(DoubleDoubleSlip, DecidedValuesAreCorrectlyRounded) {
 // the correctly rounded 50-digit value), the long double path's elsewhere.
 TEST(DenseFastPath, EndRowsDecideTheAcceleration) {
   if (!available()) GTEST_SKIP() << "no AVX2 and FMA on this CPU";
-  std::uint64_t rows = 0, decided = 0;
-  for_each_random_slip(
-      13, 3000,
-      [&](const testing::RandomModel& r, const Phase& phase,
-          const detail::HarmonicCoulombFormula<double>& formula) {
-        const double times[2] = {phase.t_begin, phase.t_end};
-        State batch[2];
-        formula.at_many(times, 2, batch);
-        for (int j = 0; j < 2; ++j) {
-          ++rows;
-          ASSERT_EQ(batch[j].x, j ? phase.x_end : phase.x_begin) << testing::describe(r);
-          ASSERT_EQ(batch[j].v, j ? phase.v_end : phase.v_begin) << testing::describe(r);
-          State fast;
-          if (!formula.fast_at(times[j], fast)) {
-            ASSERT_TRUE(same_row(batch[j], formula.long_double_at(times[j])))
-                << testing::describe(r) << " t=" << times[j];
-            continue;
-          }
-          ++decided;
-          ASSERT_TRUE(same_row(batch[j], fast)) << testing::describe(r) << " t=" << times[j];
-          ASSERT_EQ(fast.a, ExactSlip(r.model, phase).at(times[j]).a)
-              << testing::describe(r) << " t=" << times[j];
-        }
-      });
-  std::cout << decided << " of " << rows << " end rows decided by the fast path\n";
-  EXPECT_GT(rows, 3000u);
-  EXPECT_GT(decided, rows / 2);
+  testing::EndRowCounts counts;
+  for_each_random_slip(13, 3000,
+                       [&](const testing::RandomModel& r, const Phase& phase,
+                           const detail::HarmonicCoulombFormula<double>& formula) {
+                         testing::check_end_rows(
+                             formula, phase,
+                             [&](double t) { return ExactSlip(r.model, phase).at(t).a; },
+                             [&] { return testing::describe(r); }, counts);
+                       });
+  testing::expect_end_rows_tested(counts);
 }
 
 // 10^5 random models, every slip sampled: the fast path with its fallback
