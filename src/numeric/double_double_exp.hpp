@@ -8,7 +8,6 @@
 
 #include "numeric/double_double_lanes.hpp"
 #include "numeric/double_double_table.hpp"
-#include "numeric/double_double_trig.hpp"
 
 namespace frictionref::detail::lanes {
 
@@ -28,6 +27,18 @@ namespace frictionref::detail::lanes {
 // part loses bits to underflow: there the error is below 2^-1000 absolute
 // instead (kUnderflowSlack).
 inline constexpr double kExpError = 0x1p-80;
+
+// The table entries at index (one per lane, in the table), as a pair of
+// lanes: as trig_entries, lanes 0 and 2 in one register, 1 and 3 in the
+// other, so that the in-lane unpacks give the lanes in order.
+inline Pair exp_entries(const DoubleDoubleExpTable::Entry* table, __m128i index) {
+  const auto load = [table](int i) { return _mm_load_pd(&table[i].hi); };
+  const Lanes even =
+      _mm256_set_m128d(load(_mm_extract_epi32(index, 2)), load(_mm_cvtsi128_si32(index)));
+  const Lanes odd =
+      _mm256_set_m128d(load(_mm_extract_epi32(index, 3)), load(_mm_extract_epi32(index, 1)));
+  return {_mm256_unpacklo_pd(even, odd), _mm256_unpackhi_pd(even, odd)};
+}
 
 // e^z for -708 <= z.hi <= 0 (other lanes, NaN included, are clamped into
 // that range: their answer is meaningless, but the table is never read
@@ -59,7 +70,7 @@ __attribute__((always_inline)) inline Pair exp_of(const Pair& argument,
   const Pair series = fast_two_sum(leading.hi, rest);
   const __m128i index =
       _mm_add_epi32(_mm256_cvtpd_epi32(m), _mm_set1_epi32(DoubleDoubleExpTable::kHalf));
-  const Pair table{gather(t.exp_hi, index), gather(t.exp_lo, index)};
+  const Pair table = exp_entries(t.entry, index);
   const Pair product = multiply(table, series);
   // 2^k, k >= -1022: a normal double built from its exponent bits.
   const __m256i bits = _mm256_slli_epi64(

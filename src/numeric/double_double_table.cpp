@@ -61,10 +61,7 @@ DoubleDoubleTrigTable make_table() {
         cl = s_lo[r];
         break;
     }
-    t.sin_hi[j] = sh;
-    t.sin_lo[j] = sl;
-    t.cos_hi[j] = ch;
-    t.cos_lo[j] = cl;
+    t.entry[j] = {sh, sl, ch, cl};
   }
   // pi/128 is in [2^-6, 2^-5).
   const Fifty r1 = rounded_to_bits(step, -5, 38);
@@ -87,12 +84,12 @@ DoubleDoubleExpTable make_exp_table() {
   constexpr int kHalf = DoubleDoubleExpTable::kHalf;
   const Fifty up = exp(Fifty(1) / DoubleDoubleExpTable::kSteps), down = 1 / up;
   Fifty above = 1, below = 1;
-  split(above, t.exp_hi[kHalf], t.exp_lo[kHalf]);
+  split(above, t.entry[kHalf].hi, t.entry[kHalf].lo);
   for (int m = 1; m <= kHalf; ++m) {
     above *= up;
     below *= down;
-    split(above, t.exp_hi[kHalf + m], t.exp_lo[kHalf + m]);
-    split(below, t.exp_hi[kHalf - m], t.exp_lo[kHalf - m]);
+    split(above, t.entry[kHalf + m].hi, t.entry[kHalf + m].lo);
+    split(below, t.entry[kHalf - m].hi, t.entry[kHalf - m].lo);
   }
   const Fifty ln2 = boost::math::constants::ln_two<Fifty>();
   // ln 2 is in [2^-1, 2^0).
