@@ -7,6 +7,7 @@
 
 #include "numeric/double_double_lanes.hpp"
 #include "numeric/double_double_rows.hpp"
+#include "numeric/double_double_sum.hpp"
 #include "numeric/double_double_table.hpp"
 #include "numeric/double_double_trig.hpp"
 
@@ -32,19 +33,30 @@ using lanes::Trig;
 using lanes::trig_error;
 
 // The closed form (double_double_slip.hpp), one text for the lanes' values
-// (Pair) and for the bounds on their errors (Envelope).
+// (Pair) and for the bounds on their errors (Envelope), each a sum of
+// products (double_double_sum.hpp). The coefficients come negated where the
+// form subtracts (an envelope is the same for both signs).
 template <class V>
-V velocity_at(const V& v0, const V& b, const V& sr, const V& tau, const V& cos_tau) {
-  return v0 - b * cos_tau - sr * tau;
+V velocity_at(const V& v0, const V& minus_b, const V& minus_sr, const V& tau, const V& cos_tau) {
+  lanes::Sum<V> v(v0);  // v0 - b cos tau - sr tau
+  v.add(minus_b, cos_tau);
+  v.add(minus_sr, tau);
+  return v.total();
 }
 template <class V>
-V acceleration_at(const V& wb, const V& wsr, const V& sin_tau) {
-  return wb * sin_tau - wsr;
+V acceleration_at(const V& wb, const V& minus_wsr, const V& sin_tau) {
+  lanes::Sum<V> a(minus_wsr);  // wb sin tau - wsr
+  a.add(wb, sin_tau);
+  return a.total();
 }
 template <class V>
-V position_at(const V& x0, const V& w_over_omega, const V& half_sr_over_omega,
-              const V& b_over_omega, const V& h, const V& sin_tau) {
-  return x0 + h * (w_over_omega - half_sr_over_omega * h) - b_over_omega * sin_tau;
+V position_at(const V& x0, const V& w_over_omega, const V& minus_half_sr_over_omega,
+              const V& minus_b_over_omega, const V& h, const V& sin_tau) {
+  lanes::Sum<V> x(x0);  // x0 + h w / omega - h^2 sr / (2 omega) - sin tau b / omega
+  x.add(w_over_omega, h);
+  x.add(minus_half_sr_over_omega, h * h);
+  x.add(minus_b_over_omega, sin_tau);
+  return x.total();
 }
 
 }  // namespace
@@ -151,10 +163,11 @@ void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, doubl
   const DoubleDoubleTrigTable& table = double_double_trig_table();
   const Lanes omega = splat(omega_);
   const Pair angle{splat(a_hi_), splat(a_lo_)};
-  const Pair base_angle = lanes_of(base_angle_), v0 = lanes_of(v0_), b = lanes_of(b_),
-             sr = lanes_of(sr_), wb = lanes_of(wb_), wsr = lanes_of(wsr_), x0 = lanes_of(x0_),
-             w_over_omega = lanes_of(w_over_omega_), b_over_omega = lanes_of(b_over_omega_),
-             half_sr_over_omega = lanes_of(half_sr_over_omega_);
+  const Pair base_angle = lanes_of(base_angle_), v0 = lanes_of(v0_), minus_b = -lanes_of(b_),
+             minus_sr = -lanes_of(sr_), wb = lanes_of(wb_), minus_wsr = -lanes_of(wsr_),
+             x0 = lanes_of(x0_), w_over_omega = lanes_of(w_over_omega_),
+             minus_b_over_omega = -lanes_of(b_over_omega_),
+             minus_half_sr_over_omega = -lanes_of(half_sr_over_omega_);
   const __m128i base = _mm_set1_epi32(base_index_);
   for (std::size_t i = 0; i < n; i += 4) {
     const std::size_t used = lanes::group_size(i, n);
@@ -164,10 +177,10 @@ void DoubleDoubleSlip::evaluate(const double* t, std::size_t n, double* x, doubl
     const Mask in_range = magnitude(y.hi) <= splat(kLargestAngle);
     const Trig trig = sin_cos(y, base, table);
     const Pair h = tau - angle;
-    const Pair velocity = velocity_at(v0, b, sr, tau, trig.cos);
-    const Pair acceleration = acceleration_at(wb, wsr, trig.sin);
+    const Pair velocity = velocity_at(v0, minus_b, minus_sr, tau, trig.cos);
+    const Pair acceleration = acceleration_at(wb, minus_wsr, trig.sin);
     const Pair position =
-        position_at(x0, w_over_omega, half_sr_over_omega, b_over_omega, h, trig.sin);
+        position_at(x0, w_over_omega, minus_half_sr_over_omega, minus_b_over_omega, h, trig.sin);
     const lanes::RangePick pick(h.hi);
     const Lanes velocity_error = pick(velocity_error_);
     const Lanes acceleration_error = pick(acceleration_error_);
