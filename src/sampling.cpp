@@ -71,11 +71,7 @@ bool UniformSampler::advance_to(double t) {
   return true;
 }
 
-bool UniformSampler::next(State& state) {
-  if (buffer_next_ < buffer_size_) {
-    state = buffer_[buffer_next_++];
-    return true;
-  }
+bool UniformSampler::next_evaluated(State& state) {
   if (finished_ || !have_phase_) return false;
   // The next grid time below t_end (a grid time within 1e-9 dt of t_end is
   // dropped, so t_end is not preceded by a near-duplicate), else t_end.

@@ -37,10 +37,19 @@ struct GridOptions {
 class UniformSampler {
  public:
   UniformSampler(const Model& model, const GridOptions& options);
-  bool next(State& state);
+  // The next row; false at the end. (Inline where the row is already
+  // evaluated: most calls copy one buffered row.)
+  bool next(State& state) {
+    if (buffer_next_ < buffer_size_) {
+      state = buffer_[buffer_next_++];
+      return true;
+    }
+    return next_evaluated(state);
+  }
   const Summary& engine_summary() const { return engine_.summary(); }
 
  private:
+  bool next_evaluated(State& state);  // evaluates the next rows (the buffer is empty)
   double grid_time(std::uint64_t i) const;
   bool advance_to(double t);  // moves phase_ until t_begin <= t <= t_end
   bool finish();              // marks the stream finished; returns false
