@@ -93,7 +93,7 @@ bool UniformSampler::next_evaluated(State& state) {
     return true;
   }
   // This grid time and the next ones inside the same phase, evaluated
-  // together (four at a time on the seed's fast path); the rows that follow
+  // together (four or eight at a time on the fast paths); the rows that follow
   // are served from the buffer.
   const double limit = options_.last_grid_limit();
   std::size_t count = 0;

@@ -1,6 +1,7 @@
 // What the dense fast paths' tests compare rows with: the double nearest a
 // 50-digit value, rows equal bit for bit, the times and rows they sample in a
-// slip, and the checks of a slip's end rows.
+// slip, the checks of a slip's end rows, and of the rows on four and on eight
+// lanes.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "frictionref/phase.hpp"
+#include "numeric/double_double_table.hpp"
 
 namespace frictionref::testing {
 
@@ -114,6 +116,41 @@ inline void expect_end_rows_tested(const EndRowCounts& counts) {
             << counts.differing << " of them not the long double path's\n";
   EXPECT_GT(counts.rows, 3000u);
   EXPECT_GT(counts.decided, counts.rows / 2);
+}
+
+// The rows of the fast path's eight lanes against those of its four. Rows on
+// eight lanes are allowed (the default) while this lives.
+class WideLanesAllowedAfter {
+ public:
+  WideLanesAllowedAfter() = default;
+  WideLanesAllowedAfter(const WideLanesAllowedAfter&) = delete;
+  WideLanesAllowedAfter& operator=(const WideLanesAllowedAfter&) = delete;
+  ~WideLanesAllowedAfter() { detail::allow_double_double_wide_lanes(true); }
+};
+
+// A slip's batch of 21 rows (its ends and 19 times evenly between: two groups
+// of eight lanes and a rest of five), through the formula's batch with rows
+// on eight lanes and again on four: the same states, bit for bit. A row one
+// width decides and the other does not would differ wherever the long double
+// path's row is not the correctly rounded one (a quarter of rows on the
+// random models): the decisions are compared as well. Counts the rows.
+template <class Formula, class Describe>
+void check_lane_widths(const Formula& formula, const Phase& phase, const Describe& describe,
+                       std::uint64_t& rows) {
+  constexpr int kTimes = 21;
+  double times[kTimes];
+  for (int j = 0; j < kTimes; ++j)
+    times[j] = j == kTimes - 1 ? phase.t_end : phase.t_begin + phase.duration() * j / (kTimes - 1);
+  State wide[kTimes], narrow[kTimes];
+  const WideLanesAllowedAfter restore;
+  detail::allow_double_double_wide_lanes(true);
+  formula.at_many(times, kTimes, wide);
+  detail::allow_double_double_wide_lanes(false);
+  formula.at_many(times, kTimes, narrow);
+  for (int j = 0; j < kTimes; ++j) {
+    ++rows;
+    ASSERT_TRUE(same_row(wide[j], narrow[j])) << describe() << " t=" << times[j];
+  }
 }
 
 }  // namespace frictionref::testing

@@ -276,6 +276,21 @@ TEST(DenseFastPath, GeneralModelWithoutSpringSameRowsAsItsLongDoublePath) {
   RecordProperty("differing_fast_correctly_rounded", std::to_string(differing));
 }
 
+// The seed's fast path on eight lanes gives the rows of its four, on random
+// models (dense_row_checks.hpp, check_lane_widths).
+TEST(DenseFastPath, EightLanesGiveTheRowsOfFour) {
+  if (!detail::double_double_wide_lanes_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+  std::uint64_t rows = 0;
+  for_each_random_slip(17, 3000,
+                       [&](const testing::RandomModel& r, const Phase& phase,
+                           const detail::HarmonicCoulombFormula<double>& formula) {
+                         testing::check_lane_widths(
+                             formula, phase, [&] { return testing::describe(r); }, rows);
+                       });
+  std::cout << rows << " rows the same on eight lanes and on four\n";
+  EXPECT_GT(rows, 100000u);
+}
+
 // The sampler's, sample_at's and compare's batches give the rows of one
 // evaluation per time.
 TEST(DenseFastPath, SamplerRowsAreThoseOfSingleEvaluations) {

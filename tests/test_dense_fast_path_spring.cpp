@@ -384,6 +384,35 @@ TEST(DenseFastPath, DecaysEndRowsDecideTheAcceleration) {
   end_rows_decide_the_acceleration(Family::decays);
 }
 
+// The oscillator's fast path on eight lanes gives the rows of its four, on
+// random models of each family (dense_row_checks.hpp, check_lane_widths).
+void eight_lanes_give_the_rows_of_four(Family family) {
+  std::uint64_t rows = 0;
+  const auto visit = [&](const testing::RandomModel& r, const Phase& phase,
+                         const detail::LinearOscillatorFormula<double>& formula) {
+    testing::check_lane_widths(
+        formula, phase, [&] { return describe_spring(r); }, rows);
+  };
+  for_each_spring_slip(17, 2000, visit, family);
+  std::cout << rows << " rows the same on eight lanes and on four\n";
+  EXPECT_GT(rows, 50000u);
+}
+
+TEST(DenseFastPath, SpringEightLanesGiveTheRowsOfFour) {
+  if (!detail::double_double_wide_lanes_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+  eight_lanes_give_the_rows_of_four(Family::spring);
+}
+
+TEST(DenseFastPath, HarmonicsAloneEightLanesGiveTheRowsOfFour) {
+  if (!detail::double_double_wide_lanes_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+  eight_lanes_give_the_rows_of_four(Family::harmonics_alone);
+}
+
+TEST(DenseFastPath, DecaysEightLanesGiveTheRowsOfFour) {
+  if (!detail::double_double_wide_lanes_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+  eight_lanes_give_the_rows_of_four(Family::decays);
+}
+
 // `count` random models, three rows in each slip among the first six phases:
 // the rows of the long double path, except where they differ; there the fast
 // row is the correctly rounded 50-digit value, and the long double row is

@@ -35,7 +35,7 @@ ExactMotion exact_motion(const Model& model, const std::vector<double>& t) {
     }
     if (moved) law = law->for_phase(phase);
     // This time and the following ones in the same phase, evaluated together
-    // (four at a time on the seed's dense fast path), as sample_at() does.
+    // (four or eight at a time on the dense fast paths), as sample_at() does.
     std::size_t end = i + 1;
     while (end < t.size() && (t[end] < phase.t_end || phase.t_end >= last)) ++end;
     (*law)(&t[i], end - i, &m.states[i]);

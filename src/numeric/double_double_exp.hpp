@@ -1,4 +1,4 @@
-// The exponential on four lanes in double-double (numeric/double_double_lanes.hpp),
+// The exponential on four (or eight) lanes in double-double (numeric/double_double_lanes.hpp),
 // with the bound on its error (docs/theory.md 10.6). For the translation units
 // compiled with -mavx2 -mfma -ffp-contract=off only, entered only where
 // double_double_lanes_available().
@@ -10,6 +10,7 @@
 #include "numeric/double_double_table.hpp"
 
 namespace frictionref::detail::lanes {
+inline namespace FRICTIONREF_LANES_NAMESPACE {
 
 // Relative error of exp below (docs/theory.md 10.6), u = 2^-53, for an exact
 // argument z normalized (|z.lo| <= u |z.hi|), -708 <= z.hi <= 0:
@@ -31,13 +32,23 @@ inline constexpr double kExpError = 0x1p-80;
 // The table entries at index (one per lane, in the table), as a pair of
 // lanes: as trig_entries, lanes 0 and 2 in one register, 1 and 3 in the
 // other, so that the in-lane unpacks give the lanes in order.
-inline Pair exp_entries(const DoubleDoubleExpTable::Entry* table, __m128i index) {
-  const auto load = [table](int i) { return _mm_load_pd(&table[i].hi); };
-  const Lanes even =
-      _mm256_set_m128d(load(_mm_extract_epi32(index, 2)), load(_mm_cvtsi128_si32(index)));
-  const Lanes odd =
-      _mm256_set_m128d(load(_mm_extract_epi32(index, 3)), load(_mm_extract_epi32(index, 1)));
+inline Pair exp_entries(const DoubleDoubleExpTable::Entry* table, Index index) {
+  using Half = double __attribute__((vector_size(32)));  // two entries, or a value of four lanes
+  const auto two = [table](int i, int j) -> Half {
+    return _mm256_set_m128d(_mm_load_pd(&table[j].hi), _mm_load_pd(&table[i].hi));
+  };
+#if FRICTIONREF_LANES == 4
+  const Half even = two(_mm_cvtsi128_si32(index), _mm_extract_epi32(index, 2));
+  const Half odd = two(_mm_extract_epi32(index, 1), _mm_extract_epi32(index, 3));
   return {_mm256_unpacklo_pd(even, odd), _mm256_unpackhi_pd(even, odd)};
+#else
+  const Half even_low = two(_mm256_extract_epi32(index, 0), _mm256_extract_epi32(index, 2));
+  const Half odd_low = two(_mm256_extract_epi32(index, 1), _mm256_extract_epi32(index, 3));
+  const Half even_high = two(_mm256_extract_epi32(index, 4), _mm256_extract_epi32(index, 6));
+  const Half odd_high = two(_mm256_extract_epi32(index, 5), _mm256_extract_epi32(index, 7));
+  return {joined(_mm256_unpacklo_pd(even_low, odd_low), _mm256_unpacklo_pd(even_high, odd_high)),
+          joined(_mm256_unpackhi_pd(even_low, odd_low), _mm256_unpackhi_pd(even_high, odd_high))};
+#endif
 }
 
 // e^z for -708 <= z.hi <= 0 (other lanes, NaN included, are clamped into
@@ -48,7 +59,7 @@ inline Pair exp_entries(const DoubleDoubleExpTable::Entry* table, __m128i index)
 // chain, accurate to the sine's and cosine's 2^-76 and beyond.
 __attribute__((always_inline)) inline Pair exp_of(const Pair& argument,
                                                   const DoubleDoubleExpTable& t) {
-  const Lanes clamped = _mm256_max_pd(_mm256_min_pd(argument.hi, splat(0)), splat(-708));
+  const Lanes clamped = larger(smaller(argument.hi, splat(0)), splat(-708));
   const Pair z{clamped, clamped == argument.hi ? argument.lo : splat(0)};
   const Lanes k = nearest_integer(z.hi * t.inverse_ln2);
   // z - k ln 2 = r + low: k ln2_1 is exact (42 bits times |k| < 2^11), and
@@ -68,15 +79,13 @@ __attribute__((always_inline)) inline Pair exp_of(const Pair& argument,
   const Pair leading = fast_two_sum(one_y.hi, 0.5 * square.hi);  // 1 + y + y^2 / 2, with lows
   const Lanes rest = (leading.lo + one_y.lo) + (w.lo + (fused(y, w.lo, 0.5 * square.lo) + cube_on));
   const Pair series = fast_two_sum(leading.hi, rest);
-  const __m128i index =
-      _mm_add_epi32(_mm256_cvtpd_epi32(m), _mm_set1_epi32(DoubleDoubleExpTable::kHalf));
+  const Index index = add(index_of(m), splat_index(DoubleDoubleExpTable::kHalf));
   const Pair table = exp_entries(t.entry, index);
   const Pair product = multiply(table, series);
   // 2^k, k >= -1022: a normal double built from its exponent bits.
-  const __m256i bits = _mm256_slli_epi64(
-      _mm256_cvtepi32_epi64(_mm_add_epi32(_mm256_cvtpd_epi32(k), _mm_set1_epi32(1023))), 52);
-  const Lanes scale = _mm256_castsi256_pd(bits);
+  const Lanes scale = power_of_two(k);
   return {product.hi * scale, product.lo * scale};
 }
 
+}  // namespace FRICTIONREF_LANES_NAMESPACE
 }  // namespace frictionref::detail::lanes

@@ -1,7 +1,7 @@
-// Double-double arithmetic on four lanes at once, with a running error bound
+// Double-double arithmetic on four (or eight) lanes at once, with a running error bound
 // per value: the arithmetic of the fast paths (docs/theory.md 10).
 //
-// A value is hi + lo (|lo| <= ulp(hi) / 2) in each lane of an AVX2 register,
+// A value is hi + lo (|lo| <= ulp(hi) / 2) in each lane of a vector register,
 // and a Bounded value also carries e >= |hi + lo - exact|. The algorithms and
 // their relative error bounds (u = 2^-53) are those proved by Joldes, Muller
 // and Popescu, "Tight and rigorous error bounds for basic building blocks of
@@ -19,24 +19,83 @@
 //
 // Only for translation units compiled with -mavx2 -mfma -ffp-contract=off
 // (src/CMakeLists.txt), which run only on a CPU that has both (the callers
-// check `double_double_lanes_available()` first).
+// check `double_double_lanes_available()` first). A translation unit
+// compiled with -mavx512f and FRICTIONREF_LANES=8 gets eight lanes instead
+// (the dense rows' wide copies, run only where
+// double_double_wide_lanes_available()): the same operations on each lane,
+// so the same answers, in an inline namespace of its own.
 #pragma once
 
 #include <immintrin.h>
 
 #include "numeric/double_double_constant.hpp"
 
+#ifndef FRICTIONREF_LANES
+#define FRICTIONREF_LANES 4
+#endif
+#if FRICTIONREF_LANES == 4
+#define FRICTIONREF_LANES_NAMESPACE avx2
+#elif FRICTIONREF_LANES == 8
+#define FRICTIONREF_LANES_NAMESPACE avx512
+#else
+#error "FRICTIONREF_LANES is 4 (AVX2) or 8 (AVX-512)"
+#endif
+
 namespace frictionref::detail::lanes {
+inline namespace FRICTIONREF_LANES_NAMESPACE {
 
-using Lanes = double __attribute__((vector_size(32)));    // four doubles
-using Mask = long long __attribute__((vector_size(32)));  // -1 where true, 0 where false
+inline constexpr int kLanes = FRICTIONREF_LANES;
+using Lanes = double __attribute__((vector_size(8 * kLanes)));    // kLanes doubles
+using Mask = long long __attribute__((vector_size(8 * kLanes)));  // -1 where true, 0 where false
 
+#if FRICTIONREF_LANES == 4
+using Index = __m128i;  // a 32-bit integer per lane
 inline Lanes splat(double x) { return Lanes{x, x, x, x}; }
 inline Lanes magnitude(Lanes a) { return _mm256_andnot_pd(splat(-0.0), a); }
 inline Lanes fused(Lanes a, Lanes b, Lanes c) { return _mm256_fmadd_pd(a, b, c); }  // a b + c
 inline Lanes nearest_integer(Lanes a) {
   return _mm256_round_pd(a, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
 }
+inline Lanes square_root_of(Lanes a) { return _mm256_sqrt_pd(a); }
+inline Lanes smaller(Lanes a, Lanes b) { return _mm256_min_pd(a, b); }  // b where either is NaN
+inline Lanes larger(Lanes a, Lanes b) { return _mm256_max_pd(a, b); }
+inline Index splat_index(int i) { return _mm_set1_epi32(i); }
+inline Index add(Index a, Index b) { return _mm_add_epi32(a, b); }
+inline Index bits_and(Index a, Index b) { return _mm_and_si128(a, b); }
+inline Index index_of(Lanes integral) { return _mm256_cvtpd_epi32(integral); }
+// 2^k per lane for integral k in [-1022, 1023], from its exponent bits.
+inline Lanes power_of_two(Lanes k) {
+  return _mm256_castsi256_pd(_mm256_slli_epi64(
+      _mm256_cvtepi32_epi64(_mm_add_epi32(_mm256_cvtpd_epi32(k), _mm_set1_epi32(1023))), 52));
+}
+#else
+// (The zero-masking forms with every lane selected: GCC 12's plain forms
+// start from _mm512_undefined_*, which -Wmaybe-uninitialized flags.)
+using Index = __m256i;
+inline constexpr __mmask8 kAllLanes = 0xff;
+inline Lanes splat(double x) { return Lanes{x, x, x, x, x, x, x, x}; }
+inline Lanes magnitude(Lanes a) { return _mm512_abs_pd(a); }
+inline Lanes fused(Lanes a, Lanes b, Lanes c) { return _mm512_fmadd_pd(a, b, c); }
+inline Lanes nearest_integer(Lanes a) {
+  return _mm512_maskz_roundscale_pd(kAllLanes, a, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+}
+inline Lanes square_root_of(Lanes a) { return _mm512_sqrt_pd(a); }
+inline Lanes smaller(Lanes a, Lanes b) { return _mm512_maskz_min_pd(kAllLanes, a, b); }
+inline Lanes larger(Lanes a, Lanes b) { return _mm512_maskz_max_pd(kAllLanes, a, b); }
+inline Index splat_index(int i) { return _mm256_set1_epi32(i); }
+inline Index add(Index a, Index b) { return _mm256_add_epi32(a, b); }
+inline Index bits_and(Index a, Index b) { return _mm256_and_si256(a, b); }
+inline Index index_of(Lanes integral) { return _mm512_maskz_cvtpd_epi32(kAllLanes, integral); }
+inline Lanes power_of_two(Lanes k) {
+  const __m512i exponent =
+      _mm512_maskz_cvtepi32_epi64(kAllLanes, add(index_of(k), splat_index(1023)));
+  return _mm512_castsi512_pd(_mm512_maskz_slli_epi64(kAllLanes, exponent, 52));
+}
+// a in lanes 0-3, b in lanes 4-7.
+inline Lanes joined(__m256d a, __m256d b) {
+  return __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+#endif
 
 struct Pair {
   Lanes hi, lo;
@@ -145,12 +204,12 @@ inline Bounded operator/(const Bounded& x, const Bounded& y) {
 // step in double-double (within 2^-98 |s|), and |sqrt x - sqrt x'| <= e_x /
 // sqrt(x.hi - e_x). Where x.hi does not exceed e_x the error is infinite.
 inline Bounded square_root(const Bounded& x) {
-  const Lanes s0 = _mm256_sqrt_pd(x.value.hi);
+  const Lanes s0 = square_root_of(x.value.hi);
   const Pair square = two_prod(s0, s0);
   const Pair residual = x.value - square;
   const Pair s = fast_two_sum(s0, (residual.hi + residual.lo) / (2 * s0));
   const Lanes room = x.value.hi * (1 - 0x1p-50) - x.error;
-  const Lanes carried = x.error / _mm256_sqrt_pd(room) * (1 + 0x1p-40);
+  const Lanes carried = x.error / square_root_of(room) * (1 + 0x1p-40);
   const Lanes error = room > splat(0) ? carried : splat(__builtin_inf());
   return {s, error + (magnitude(s0) * 0x1p-98 + kUnderflowSlack)};
 }
@@ -204,4 +263,5 @@ inline Envelope envelope(const DoubleDoubleConstant& c) {
   return Envelope{{{splat(absolute(c.hi) + absolute(c.lo)), splat(0)}, splat(c.error)}};
 }
 
+}  // namespace FRICTIONREF_LANES_NAMESPACE
 }  // namespace frictionref::detail::lanes

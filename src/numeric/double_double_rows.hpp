@@ -1,4 +1,4 @@
-// The rows of a dense fast path in groups of four lanes (docs/theory.md 10):
+// The rows of a dense fast path in groups of four (or eight) lanes (docs/theory.md 10):
 // a group's times, the error bound of the smallest range of h = w t - w t_a
 // that holds each lane (one bound per range, computed once per phase), and
 // the answers stored. For the translation units compiled with -mavx2 -mfma
@@ -11,6 +11,7 @@
 #include "numeric/double_double_lanes.hpp"
 
 namespace frictionref::detail::lanes {
+inline namespace FRICTIONREF_LANES_NAMESPACE {
 
 // The ranges of |h| with bounds of their own: a row takes those of the
 // smallest range that holds its own |h|, so that its answer depends on the
@@ -19,15 +20,23 @@ inline constexpr int kRanges = 4;
 inline constexpr double kRange[kRanges] = {2, 8, 64, 513};
 
 // How many of t[i], t[i + 1], ... (of n) the group starting at i holds.
-inline std::size_t group_size(std::size_t i, std::size_t n) { return n - i < 4 ? n - i : 4; }
+inline std::size_t group_size(std::size_t i, std::size_t n) {
+  constexpr std::size_t kGroup = kLanes;
+  return n - i < kGroup ? n - i : kGroup;
+}
 
 // The group's times; a short last group repeats its last time in the unused lanes.
 // (A full group with one load: lanes written one at a time and read back
 // as a vector stall the load on the stores, some 30 % of a seed row.)
 inline Lanes group_times(const double* t, std::size_t i, std::size_t used) {
-  if (used == 4) return _mm256_loadu_pd(t + i);
+  if (used == static_cast<std::size_t>(kLanes)) {
+    Lanes time;
+    __builtin_memcpy(&time, t + i, sizeof time);
+    return time;
+  }
   Lanes time;
-  for (std::size_t k = 0; k < 4; ++k) time[k] = t[i + (k < used ? k : used - 1)];
+  for (std::size_t k = 0; k < static_cast<std::size_t>(kLanes); ++k)
+    time[k] = t[i + (k < used ? k : used - 1)];
   return time;
 }
 
@@ -61,16 +70,21 @@ inline void store_group(std::size_t i, std::size_t used, const Pair& position, c
   const Mask bits = (ok.position & static_cast<long long>(kPositionDecided)) |
                     (ok.velocity & static_cast<long long>(kVelocityDecided)) |
                     (ok.acceleration & static_cast<long long>(kAccelerationDecided));
-  if (used == 4) {  // vector stores, and the lanes' low bytes gathered into one int
-    _mm256_storeu_pd(x + i, position.hi);
-    _mm256_storeu_pd(v + i, velocity.hi);
-    _mm256_storeu_pd(a + i, acceleration.hi);
+  if (used == static_cast<std::size_t>(kLanes)) {  // vector stores, and the lanes' low bytes packed
+    __builtin_memcpy(x + i, &position.hi, sizeof position.hi);
+    __builtin_memcpy(v + i, &velocity.hi, sizeof velocity.hi);
+    __builtin_memcpy(a + i, &acceleration.hi, sizeof acceleration.hi);
+#if FRICTIONREF_LANES == 4
     const __m256i words = _mm256_permutevar8x32_epi32(reinterpret_cast<__m256i>(bits),
                                                       _mm256_setr_epi32(0, 2, 4, 6, 0, 0, 0, 0));
     const __m128i bytes = _mm_shuffle_epi8(
         _mm256_castsi256_si128(words),
         _mm_setr_epi8(0, 4, 8, 12, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1));
     _mm_storeu_si32(decided + i, bytes);
+#else
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(decided + i),
+                     _mm512_maskz_cvtepi64_epi8(kAllLanes, reinterpret_cast<__m512i>(bits)));
+#endif
     return;
   }
   for (std::size_t k = 0; k < used; ++k) {
@@ -81,4 +95,5 @@ inline void store_group(std::size_t i, std::size_t used, const Pair& position, c
   }
 }
 
+}  // namespace FRICTIONREF_LANES_NAMESPACE
 }  // namespace frictionref::detail::lanes

@@ -26,6 +26,7 @@
 #include "numeric/double_double_lanes.hpp"
 
 namespace frictionref::detail::lanes {
+inline namespace FRICTIONREF_LANES_NAMESPACE {
 
 inline constexpr double kSumErrorPerMass = 0x1p-106;  // u^2, times (16 + 8 k) M_k
 
@@ -79,4 +80,5 @@ class Sum<Envelope> {
   int terms_ = 0;
 };
 
+}  // namespace FRICTIONREF_LANES_NAMESPACE
 }  // namespace frictionref::detail::lanes

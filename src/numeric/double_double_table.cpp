@@ -113,6 +113,18 @@ bool double_double_lanes_available() {
   return available;
 }
 
+namespace {
+bool wide_lanes_allowed = true;
+}  // namespace
+
+bool double_double_wide_lanes_available() {
+  static const bool available =
+      double_double_lanes_available() && __builtin_cpu_supports("avx512f");
+  return available && wide_lanes_allowed;
+}
+
+void allow_double_double_wide_lanes(bool allowed) { wide_lanes_allowed = allowed; }
+
 const DoubleDoubleTrigTable& double_double_trig_table() {
   static const DoubleDoubleTrigTable table = make_table();
   return table;

@@ -47,4 +47,12 @@ const DoubleDoubleExpTable& double_double_exp_table();
 // numeric/double_double_lanes.hpp (its users run only then).
 bool double_double_lanes_available();
 
+// True where the fast paths' rows run on eight lanes (AVX-512F), the same
+// answers as on four (the *_wide.cpp translation units): where this CPU has
+// AVX-512F and tests have not turned them off.
+bool double_double_wide_lanes_available();
+// Tests: false keeps the rows on four lanes (to compare both widths), true
+// allows eight again where the CPU has them. Not for concurrent use.
+void allow_double_double_wide_lanes(bool allowed);
+
 }  // namespace frictionref::detail

@@ -1,4 +1,4 @@
-// Sine and cosine on four lanes in double-double (numeric/double_double_lanes.hpp),
+// Sine and cosine on four (or eight) lanes in double-double (numeric/double_double_lanes.hpp),
 // with the bound on their error: the table reduction of docs/theory.md 10.3.
 // For the translation units compiled with -mavx2 -mfma -ffp-contract=off only
 // (the fast paths of the dense output), entered only where
@@ -11,6 +11,7 @@
 #include "numeric/double_double_table.hpp"
 
 namespace frictionref::detail::lanes {
+inline namespace FRICTIONREF_LANES_NAMESPACE {
 
 // The error of sin_cos beyond its argument's, for |d| <= 0.01228 (docs/theory.md
 // 10.3): the d^4 terms of cos d - 1 (below 9.5e-10) with eleven roundings
@@ -33,29 +34,49 @@ inline Lanes trig_error(Lanes argument_error, Lanes j_max) {
 }
 
 // The table entries at index (one per lane, each 0 <= index < the table's
-// size), as lanes: four loads and a transpose, about 2.5 times faster than a
-// gather per value on this machine (docs/benchmarks.md).
+// size), as lanes: a load and a transpose per four lanes, about 2.5 times
+// faster than a gather per value on this machine (docs/benchmarks.md).
 struct TrigEntries {
   Lanes sin_hi, sin_lo, cos_hi, cos_lo;
 };
-inline TrigEntries trig_entries(const DoubleDoubleTrigTable::Entry* table, __m128i index) {
-  const Lanes r0 = _mm256_load_pd(&table[_mm_cvtsi128_si32(index)].sin_hi);
-  const Lanes r1 = _mm256_load_pd(&table[_mm_extract_epi32(index, 1)].sin_hi);
-  const Lanes r2 = _mm256_load_pd(&table[_mm_extract_epi32(index, 2)].sin_hi);
-  const Lanes r3 = _mm256_load_pd(&table[_mm_extract_epi32(index, 3)].sin_hi);
-  const Lanes highs01 = _mm256_unpacklo_pd(r0, r1);  // sin_hi 0 1, cos_hi 0 1
-  const Lanes lows01 = _mm256_unpackhi_pd(r0, r1);   // sin_lo 0 1, cos_lo 0 1
-  const Lanes highs23 = _mm256_unpacklo_pd(r2, r3);
-  const Lanes lows23 = _mm256_unpackhi_pd(r2, r3);
-  return {
-      _mm256_permute2f128_pd(highs01, highs23, 0x20), _mm256_permute2f128_pd(lows01, lows23, 0x20),
-      _mm256_permute2f128_pd(highs01, highs23, 0x31), _mm256_permute2f128_pd(lows01, lows23, 0x31)};
+using Quarter = double __attribute__((vector_size(32)));  // one entry, or a value of four lanes
+// The entries i0..i3 transposed: sin_hi, sin_lo, cos_hi and cos_lo of the four.
+inline void transposed(const DoubleDoubleTrigTable::Entry* table, int i0, int i1, int i2, int i3,
+                       Quarter out[4]) {
+  const Quarter r0 = _mm256_load_pd(&table[i0].sin_hi);
+  const Quarter r1 = _mm256_load_pd(&table[i1].sin_hi);
+  const Quarter r2 = _mm256_load_pd(&table[i2].sin_hi);
+  const Quarter r3 = _mm256_load_pd(&table[i3].sin_hi);
+  const Quarter highs01 = _mm256_unpacklo_pd(r0, r1);  // sin_hi 0 1, cos_hi 0 1
+  const Quarter lows01 = _mm256_unpackhi_pd(r0, r1);   // sin_lo 0 1, cos_lo 0 1
+  const Quarter highs23 = _mm256_unpacklo_pd(r2, r3);
+  const Quarter lows23 = _mm256_unpackhi_pd(r2, r3);
+  out[0] = _mm256_permute2f128_pd(highs01, highs23, 0x20);
+  out[1] = _mm256_permute2f128_pd(lows01, lows23, 0x20);
+  out[2] = _mm256_permute2f128_pd(highs01, highs23, 0x31);
+  out[3] = _mm256_permute2f128_pd(lows01, lows23, 0x31);
+}
+inline TrigEntries trig_entries(const DoubleDoubleTrigTable::Entry* table, Index index) {
+#if FRICTIONREF_LANES == 4
+  Quarter e[4];
+  transposed(table, _mm_cvtsi128_si32(index), _mm_extract_epi32(index, 1),
+             _mm_extract_epi32(index, 2), _mm_extract_epi32(index, 3), e);
+  return {e[0], e[1], e[2], e[3]};
+#else
+  Quarter low[4], high[4];
+  transposed(table, _mm256_extract_epi32(index, 0), _mm256_extract_epi32(index, 1),
+             _mm256_extract_epi32(index, 2), _mm256_extract_epi32(index, 3), low);
+  transposed(table, _mm256_extract_epi32(index, 4), _mm256_extract_epi32(index, 5),
+             _mm256_extract_epi32(index, 6), _mm256_extract_epi32(index, 7), high);
+  return {joined(low[0], high[0]), joined(low[1], high[1]), joined(low[2], high[2]),
+          joined(low[3], high[3])};
+#endif
 }
 
 // sin and cos of base pi/128 + y, for |y.hi| <= 2^9 and base in 0..255
 // (error: trig_error with |j| the table steps taken, below 2^15).
 // Inlined into the row loop, as it was measured (docs/benchmarks.md).
-__attribute__((always_inline)) inline Trig sin_cos(const Pair& y, __m128i base,
+__attribute__((always_inline)) inline Trig sin_cos(const Pair& y, Index base,
                                                    const DoubleDoubleTrigTable& t) {
   const Lanes j = nearest_integer(y.hi * t.steps_per_radian);
   // d = y - j pi/128: j reduce1 and its difference with y.hi are exact; the
@@ -83,8 +104,8 @@ __attribute__((always_inline)) inline Trig sin_cos(const Pair& y, __m128i base,
   const Lanes q_lo =
       (-0.5 * square.lo - d.hi * d.lo) +
       d2 * d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 + d2 * (-1.0 / 3628800))));
-  const __m128i index = _mm_and_si128(_mm_add_epi32(_mm256_cvtpd_epi32(j), base),
-                                      _mm_set1_epi32(DoubleDoubleTrigTable::kSize - 1));
+  const Index index =
+      bits_and(add(index_of(j), base), splat_index(DoubleDoubleTrigTable::kSize - 1));
   const TrigEntries entries = trig_entries(t.entry, index);
   const Lanes &s_hi = entries.sin_hi, &s_lo = entries.sin_lo;
   const Lanes &c_hi = entries.cos_hi, &c_lo = entries.cos_lo;
@@ -122,4 +143,5 @@ inline Bounded table_angle(Lanes k, const DoubleDoubleTrigTable& t) {
          Bounded{{k3, splat(0)}, magnitude(k3) * 0x1p-52 + magnitude(k) * 0x1p-130};
 }
 
+}  // namespace FRICTIONREF_LANES_NAMESPACE
 }  // namespace frictionref::detail::lanes

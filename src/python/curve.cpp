@@ -77,7 +77,7 @@ py::array at_times(const PyModel& model, py::handle t_object) {
     engine.next(phase);
     std::optional<PhaseEvaluator> law(std::in_place, model.model, phase);
     // The times of one phase are evaluated together (the seed's fast path
-    // takes four at a time; the answers are those of one call per time).
+    // takes four or eight at a time; the answers are those of one call per time).
     constexpr std::size_t kBatch = 64;
     double batch_times[kBatch];
     State batch_states[kBatch];

@@ -1,5 +1,5 @@
 // The fast path of the seed's dense output (docs/theory.md 10): a slip's x, v
-// and a at many times, four at once, in double-double arithmetic with a
+// and a at many times, four (or eight) at once, in double-double arithmetic with a
 // rigorous error bound. Where the bound shows which double the exact closed
 // form rounds to, that double is the answer (it is the correctly rounded
 // value, so it equals the long double path's answer wherever that one is
@@ -55,6 +55,12 @@ class DoubleDoubleSlip {
                 unsigned char* decided) const;
 
  private:
+  // evaluate() on lanes of kWidth (4: AVX2, 8: AVX-512), the same answers
+  // (double_double_slip_rows.hpp).
+  template <int kWidth>
+  void evaluate_lanes(const double* t, std::size_t n, double* x, double* v, double* a,
+                      unsigned char* decided) const;
+
   using Constant = DoubleDoubleConstant;
 
   bool usable_ = false;

@@ -1,7 +1,7 @@
 // The fast path of the general model's dense output for a slip with a spring
 // and damper (not critically damped), a damper alone, or neither, and forcing
 // terms, without a record (docs/theory.md 10.6): a slip's x, v and a at many times,
-// four at once, in double-double arithmetic with a rigorous error bound.
+// four (or eight) at once, in double-double arithmetic with a rigorous error bound.
 // Where the bound shows which double the exact closed form rounds to, that
 // double is the answer; elsewhere the lane is left undecided and the caller
 // evaluates it in long double (Ziv's strategy), as double_double_slip.hpp
@@ -100,8 +100,12 @@ class DoubleDoubleOscillator {
   static int degree(FreeMotion free, int decays) {
     return free == FreeMotion::parabola ? 2 : free == FreeMotion::decays && decays == 1 ? 1 : 0;
   }
-  // The rows of one kind of free motion.
-  template <FreeMotion kFree>
+  // evaluate() on lanes of kWidth (4: AVX2, 8: AVX-512), the same answers,
+  // and its rows of one kind of free motion (double_double_oscillator_rows.hpp).
+  template <int kWidth>
+  void evaluate_lanes(const double* t, std::size_t n, double* x, double* v, double* a,
+                      unsigned char* decided) const;
+  template <FreeMotion kFree, int kWidth>
   void evaluate_rows(const double* t, std::size_t n, double* x, double* v, double* a,
                      unsigned char* decided) const;
 
