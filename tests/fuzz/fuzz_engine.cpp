@@ -387,6 +387,29 @@ long double force_tolerance(const Model& m, const GeneralScales& g, double t, do
 
 long double speed_tolerance(const GeneralScales& g) { return 1e-9L * g.speed; }
 
+// The phase's rows in one batch equal its single evaluations bit for bit:
+// a batch's whole groups of eight take the dense fast path's eight lanes
+// where the CPU has AVX-512F, a single row its four lanes (or either falls
+// back to long double: the same rule both ways). 17 times: its ends and 15
+// between, two groups of eight and one row.
+void check_batch(const Model& m, const Phase& p) {
+  constexpr int kBatch = 17;
+  double times[kBatch];
+  for (int k = 0; k < kBatch; ++k)
+    times[k] = k == kBatch - 1 ? p.t_end : p.t_begin + (p.t_end - p.t_begin) * k / (kBatch - 1);
+  const frictionref::PhaseEvaluator law(m, p);
+  frictionref::State rows[kBatch];
+  law(times, kBatch, rows);
+  for (int k = 0; k < kBatch; ++k) {
+    const frictionref::State single = law(times[k]);
+    FUZZ_CHECK_AT(std::memcmp(&rows[k].x, &single.x, sizeof(double)) == 0 &&
+                      std::memcmp(&rows[k].v, &single.v, sizeof(double)) == 0 &&
+                      std::memcmp(&rows[k].a, &single.a, sizeof(double)) == 0 &&
+                      rows[k].t == single.t && rows[k].phase == single.phase,
+                  &p);
+  }
+}
+
 void check_phase_general(const Model& m, const GeneralScales& g, const Phase& p) {
   FUZZ_CHECK_AT(std::isfinite(p.t_begin) && std::isfinite(p.t_end), &p);
   FUZZ_CHECK_AT(p.t_begin < p.t_end, &p);
@@ -654,6 +677,7 @@ void run(const Model& model, double t_end, const SolveOptions& options, bool lim
     FUZZ_CHECK_AT(now >= transitions_before + own_end, &phase);
     const std::uint64_t skipped = now - transitions_before - own_end;
     transitions_before = now;
+    check_batch(model, phase);
     if (general) {
       check_phase_general(model, scales, phase);
       if (count == 1)
