@@ -54,10 +54,6 @@ UniformSampler::UniformSampler(const Model& model, const GridOptions& options)
   if (have_phase_) law_.emplace(model_, phase_);
 }
 
-double UniformSampler::grid_time(std::uint64_t i) const {
-  return model_.t0 + static_cast<double>(i) * options_.dt;
-}
-
 bool UniformSampler::finish() {
   finished_ = true;
   return false;

@@ -50,7 +50,9 @@ class UniformSampler {
 
  private:
   bool next_evaluated(State& state);  // evaluates the next rows (the buffer is empty)
-  double grid_time(std::uint64_t i) const;
+  double grid_time(std::uint64_t i) const {
+    return model_.t0 + static_cast<double>(i) * options_.dt;
+  }
   bool advance_to(double t);  // moves phase_ until t_begin <= t <= t_end
   bool finish();              // marks the stream finished; returns false
 

@@ -31,10 +31,15 @@ void fast_slip_rows(const Fast& fast, const BasicPhase<double>& phase, const dou
   for (std::size_t i = 0; i < n; i += kChunk) {
     const std::size_t m = std::min(kChunk, n - i);
     fast.evaluate(t + i, m, x, v, a, decided);
-    for (std::size_t k = 0; k < m; ++k)
-      out[i + k] = row_decided(decided[k], phase, t[i + k])
-                       ? slip_state(phase, t[i + k], x[k], v[k], a[k])
-                       : long_double_at(t[i + k]);
+    for (std::size_t k = 0; k < m; ++k) {
+      const double time = t[i + k];
+      if (decided[k] == kAllDecided && time > phase.t_begin && time < phase.t_end)
+        out[i + k] = {time, x[k], v[k], a[k], phase.kind};  // the common row, inside the phase
+      else
+        out[i + k] = row_decided(decided[k], phase, time)
+                         ? slip_state(phase, time, x[k], v[k], a[k])
+                         : long_double_at(time);
+    }
   }
 }
 
