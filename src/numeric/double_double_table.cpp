@@ -125,6 +125,10 @@ bool double_double_wide_lanes_available() {
 
 void allow_double_double_wide_lanes(bool allowed) { wide_lanes_allowed = allowed; }
 
+std::size_t eight_lane_rows(std::size_t n) {
+  return double_double_wide_lanes_available() ? n - n % 8 : 0;
+}
+
 const DoubleDoubleTrigTable& double_double_trig_table() {
   static const DoubleDoubleTrigTable table = make_table();
   return table;

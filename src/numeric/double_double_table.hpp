@@ -4,6 +4,8 @@
 // from 50-digit values (double_double_table.cpp), as sin_cos.cpp's table.
 #pragma once
 
+#include <cstddef>
+
 namespace frictionref::detail {
 
 struct DoubleDoubleTrigTable {
@@ -51,6 +53,11 @@ bool double_double_lanes_available();
 // answers as on four (the *_wide.cpp translation units): where this CPU has
 // AVX-512F and tests have not turned them off.
 bool double_double_wide_lanes_available();
+// How many of a call's n rows a fast path evaluates on eight lanes: its whole
+// groups of eight where double_double_wide_lanes_available(), else none. The
+// rest (and a call of fewer rows, as a single sample's) takes four lanes: the
+// same answers, row by row.
+std::size_t eight_lane_rows(std::size_t n);
 // Tests: false keeps the rows on four lanes (to compare both widths), true
 // allows eight again where the CPU has them. Not for concurrent use.
 void allow_double_double_wide_lanes(bool allowed);

@@ -307,9 +307,7 @@ DoubleDoubleOscillator::DoubleDoubleOscillator(const OscillatorSlipStart& s) {
 
 void DoubleDoubleOscillator::evaluate(const double* t, std::size_t n, double* x, double* v,
                                       double* a, unsigned char* decided) const {
-  // Whole groups of eight where the CPU has them, the rest (and a call of
-  // fewer rows, as a single sample's) on four: the same answers, row by row.
-  const std::size_t wide = double_double_wide_lanes_available() ? n - n % 8 : 0;
+  const std::size_t wide = eight_lane_rows(n);
   if (wide > 0) evaluate_lanes<8>(t, wide, x, v, a, decided);
   if (wide < n) evaluate_lanes<4>(t + wide, n - wide, x + wide, v + wide, a + wide, decided + wide);
 }
