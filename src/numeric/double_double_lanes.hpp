@@ -65,8 +65,8 @@ inline Index bits_and(Index a, Index b) { return _mm_and_si128(a, b); }
 inline Index index_of(Lanes integral) { return _mm256_cvtpd_epi32(integral); }
 // 2^k per lane for integral k in [-1022, 1023], from its exponent bits.
 inline Lanes power_of_two(Lanes k) {
-  return _mm256_castsi256_pd(_mm256_slli_epi64(
-      _mm256_cvtepi32_epi64(_mm_add_epi32(_mm256_cvtpd_epi32(k), _mm_set1_epi32(1023))), 52));
+  return _mm256_castsi256_pd(
+      _mm256_slli_epi64(_mm256_cvtepi32_epi64(add(index_of(k), splat_index(1023))), 52));
 }
 #else
 // (The zero-masking forms with every lane selected: GCC 12's plain forms
