@@ -1,5 +1,6 @@
 #include "frictionref/sampling.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -67,40 +68,66 @@ bool UniformSampler::advance_to(double t) {
   return true;
 }
 
-bool UniformSampler::next_evaluated(State& state) {
+bool UniformSampler::buffer_one(const State& state) {
+  times_[0] = state.t;
+  x_[0] = state.x;
+  v_[0] = state.v;
+  a_[0] = state.a;
+  buffer_phase_ = state.phase;
+  buffer_next_ = 0;
+  buffer_size_ = 1;
+  return true;
+}
+
+void UniformSampler::fill_grid_times() {
+  // i as index_ + k in double, exact below 2^53 (a loop without conversions
+  // of 64-bit integers, which the compiler turns into vector code).
+  const double t0 = model_.t0, dt = options_.dt;
+  if (index_ + kBufferRows <= (std::uint64_t{1} << 53)) {
+    const double base = static_cast<double>(index_);
+    for (std::size_t k = 0; k < kBufferRows; ++k)
+      times_[k] = t0 + (base + static_cast<double>(static_cast<int>(k))) * dt;
+  } else {
+    for (std::size_t k = 0; k < kBufferRows; ++k) times_[k] = grid_time(index_ + k);
+  }
+}
+
+bool UniformSampler::evaluate_next_rows() {
   if (finished_ || !have_phase_) return false;
   // The next grid time below t_end (a grid time within 1e-9 dt of t_end is
   // dropped, so t_end is not preceded by a near-duplicate), else t_end.
   double t = grid_time(index_);
-  const bool on_grid = t < options_.last_grid_limit();
+  const double limit = options_.last_grid_limit();
+  const bool on_grid = t < limit;
   if (!on_grid) t = options_.t_end;
   // With events, a phase boundary before the next grid time comes first; it
   // is reported in the phase that starts there.
   if (options_.include_events && phase_.t_end < t) {
     const double boundary = phase_.t_end;
     if (!advance_to(boundary)) return finish();
-    state = (*law_)(boundary);
-    return true;
+    return buffer_one((*law_)(boundary));
   }
   if (!advance_to(t)) return finish();
   if (!on_grid) {
-    state = (*law_)(t);
     finished_ = true;
-    return true;
+    return buffer_one((*law_)(t));
   }
   // This grid time and the next ones inside the same phase, evaluated
-  // together (four or eight at a time on the fast paths); the rows that follow
-  // are served from the buffer.
-  const double limit = options_.last_grid_limit();
-  std::size_t count = 0;
-  for (double g = t; count == 0 || (count < kBufferRows && g < limit && g < phase_.t_end);
-       g = grid_time(index_ + count))
-    buffer_times_[count++] = g;
-  (*law_)(buffer_times_.data(), count, buffer_.data());
+  // together (four or eight at a time on the fast paths). Grid times do not
+  // decrease with i, so those below the phase's end and the grid's limit
+  // are the first `count`, found by bisection (this one, t, is among them:
+  // advance_to).
+  fill_grid_times();
+  const double below = std::fmin(limit, phase_.t_end);
+  const std::size_t count =
+      static_cast<std::size_t>(std::partition_point(times_.begin() + 1, times_.end(),
+                                                    [below](double g) { return g < below; }) -
+                               times_.begin());
+  (*law_)(times_.data(), count, x_.data(), v_.data(), a_.data());
+  buffer_phase_ = phase_.kind;
   index_ += count;
-  buffer_next_ = 1;
+  buffer_next_ = 0;
   buffer_size_ = count;
-  state = buffer_[0];
   return true;
 }
 

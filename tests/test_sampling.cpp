@@ -285,7 +285,9 @@ TEST(UniformSamplerEvents, ReversalOnAGridPointCarriesTheRightLimit) {
 // evaluator built afresh, bit for bit, in every family: the seed's, the
 // general model's (with a fast path, over-damped, and with a record) and the
 // rigid block's on a record.
-TEST(PhaseEvaluator, ForPhaseGivesTheStatesOfAFreshEvaluator) {
+// A model of each family: the seed's, the general model's (with a fast path,
+// and over-damped) and the rigid block's on a record, with a spring (k = 4).
+std::vector<Model> models_of_every_family() {
   std::vector<double> record_t, record_a;
   for (int i = 0; i <= 300; ++i) {
     record_t.push_back(0.01 * i);
@@ -307,11 +309,17 @@ TEST(PhaseEvaluator, ForPhaseGivesTheStatesOfAFreshEvaluator) {
     models[k].ground_motion = testing::record(record_t, record_a);
   }
   models[4].stiffness = 20;
-  const auto same = [](const State& a, const State& b) {
-    return std::memcmp(&a.x, &b.x, sizeof(double)) == 0 &&
-           std::memcmp(&a.v, &b.v, sizeof(double)) == 0 &&
-           std::memcmp(&a.a, &b.a, sizeof(double)) == 0 && a.t == b.t && a.phase == b.phase;
-  };
+  return models;
+}
+
+bool same_state(const State& a, const State& b) {
+  return std::memcmp(&a.x, &b.x, sizeof(double)) == 0 &&
+         std::memcmp(&a.v, &b.v, sizeof(double)) == 0 &&
+         std::memcmp(&a.a, &b.a, sizeof(double)) == 0 && a.t == b.t && a.phase == b.phase;
+}
+
+TEST(PhaseEvaluator, ForPhaseGivesTheStatesOfAFreshEvaluator) {
+  const std::vector<Model> models = models_of_every_family();
   for (std::size_t k = 0; k < models.size(); ++k) {
     const double t_end = models[k].ground_motion ? 3 : 40;
     ExactEngine engine(models[k], t_end);
@@ -324,13 +332,87 @@ TEST(PhaseEvaluator, ForPhaseGivesTheStatesOfAFreshEvaluator) {
       const PhaseEvaluator fresh(models[k], phase);
       for (int j = 0; j <= 8; ++j) {
         const double t = j == 8 ? phase.t_end : phase.t_begin + phase.duration() * j / 8;
-        ASSERT_TRUE(same(walked(t), fresh(t)))
+        ASSERT_TRUE(same_state(walked(t), fresh(t)))
             << "model " << k << " phase " << phases << " t=" << t;
       }
       ++phases;
       slips += phase.kind != PhaseKind::stick;
     } while (engine.next(phase));
     EXPECT_GT(slips, 3) << "model " << k;
+  }
+}
+
+// The columns of an evaluator are its states, bit for bit, at many times of
+// each phase at once (a phase's ends among them) and of every family.
+TEST(PhaseEvaluator, ColumnsAreTheStatesOneAtATime) {
+  for (const Model& model : models_of_every_family()) {
+    const double t_end = model.ground_motion ? 3 : 40;
+    ExactEngine engine(model, t_end);
+    Phase phase;
+    int phases = 0;
+    while (engine.next(phase)) {
+      const PhaseEvaluator law(model, phase);
+      std::vector<double> times;
+      for (int j = 0; j <= 100; ++j)
+        times.push_back(j == 100 ? phase.t_end : phase.t_begin + phase.duration() * j / 100);
+      std::vector<double> x(times.size()), v(times.size()), a(times.size());
+      law(times.data(), times.size(), x.data(), v.data(), a.data());
+      for (std::size_t i = 0; i < times.size(); ++i)
+        ASSERT_TRUE(same_state({times[i], x[i], v[i], a[i], phase.kind}, law(times[i])))
+            << "phase " << phases << " t=" << times[i];
+      ++phases;
+    }
+    EXPECT_GT(phases, 6);
+  }
+}
+
+// next(StateRows&) gives the rows of next(State&): each row as sample_at gives
+// it at the same times (another path through the engine and the formulas),
+// in blocks of one phase of at most 64 rows; and next(State&) and
+// next(StateRows&) mixed on one sampler give the same rows in order.
+TEST(UniformSampler, RowsAsColumnsAreTheRowsOfSampleAt) {
+  for (const Model& model : models_of_every_family()) {
+    for (const bool events : {false, true}) {
+      GridOptions grid;
+      grid.t_end = model.ground_motion ? 3 : 40;
+      grid.dt = model.ground_motion ? 0.00037 : 0.013;
+      grid.include_events = events;
+      const std::vector<State> one_at_a_time = all_rows(model, grid);
+      std::vector<State> blocks, mixed;
+      UniformSampler sampler(model, grid);
+      StateRows rows;
+      std::size_t longest = 0;
+      while (sampler.next(rows)) {
+        ASSERT_GT(rows.size, 0u);
+        ASSERT_LE(rows.size, 64u);
+        longest = std::max(longest, rows.size);
+        for (std::size_t i = 0; i < rows.size; ++i) blocks.push_back(rows[i]);
+      }
+      EXPECT_FALSE(sampler.next(rows));
+      EXPECT_EQ(longest, 64u);  // the grid is fine enough for whole blocks
+      UniformSampler alternating(model, grid);
+      State state;
+      for (int k = 0;; ++k) {
+        if (k % 3 == 0) {
+          if (!alternating.next(state)) break;
+          mixed.push_back(state);
+        } else {
+          if (!alternating.next(rows)) break;
+          for (std::size_t i = 0; i < rows.size; ++i) mixed.push_back(rows[i]);
+        }
+      }
+      std::vector<double> times;
+      for (const State& row : one_at_a_time) times.push_back(row.t);
+      const std::vector<State> reference = sample_at(model, times);
+      ASSERT_EQ(blocks.size(), reference.size());
+      ASSERT_EQ(mixed.size(), reference.size());
+      ASSERT_EQ(one_at_a_time.size(), reference.size());
+      for (std::size_t i = 0; i < reference.size(); ++i) {
+        ASSERT_TRUE(same_state(blocks[i], reference[i])) << "row " << i << " t=" << times[i];
+        ASSERT_TRUE(same_state(mixed[i], reference[i])) << "row " << i;
+        ASSERT_TRUE(same_state(one_at_a_time[i], reference[i])) << "row " << i;
+      }
+    }
   }
 }
 

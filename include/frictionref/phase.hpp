@@ -59,6 +59,10 @@ class BasicPhaseEvaluator {
   // The same values as one call per time, faster for the seed's model in
   // double (docs/theory.md 10 evaluates four times at once).
   void operator()(const Real* times, std::size_t count, BasicState<Real>* states) const;
+  // The same states as columns: x[i], v[i] and a[i] of the state at times[i]
+  // (its t is times[i], its phase this phase's kind). The fast paths write
+  // these arrays directly, so this is the cheapest way to many rows.
+  void operator()(const Real* times, std::size_t count, Real* x, Real* v, Real* a) const;
 
   // The evaluator of another phase of the same model: the same states as
   // BasicPhaseEvaluator(model, phase), sharing what depends on the model

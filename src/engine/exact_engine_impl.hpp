@@ -150,6 +150,12 @@ void BasicPhaseEvaluator<Real>::operator()(const Real* times, std::size_t count,
 }
 
 template <class Real>
+void BasicPhaseEvaluator<Real>::operator()(const Real* times, std::size_t count, Real* x, Real* v,
+                                           Real* a) const {
+  formula_->columns(times, count, x, v, a);
+}
+
+template <class Real>
 BasicState<Real> evaluate(const BasicModel<Real>& model, const BasicPhase<Real>& phase,
                           const Real& t) {
   return detail::make_phase_formula(model, phase)->at(t);

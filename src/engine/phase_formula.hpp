@@ -20,6 +20,17 @@ class PhaseFormula {
   virtual void at_many(const Real* t, std::size_t n, BasicState<Real>* out) const {
     for (std::size_t i = 0; i < n; ++i) out[i] = at(t[i]);
   }
+  // x, v and a of the same states as columns (their t are the times, their
+  // phase the phase's kind): the fast paths write their rows straight into
+  // them, and a sampler hands them on without building states.
+  virtual void columns(const Real* t, std::size_t n, Real* x, Real* v, Real* a) const {
+    for (std::size_t i = 0; i < n; ++i) {
+      const BasicState<Real> state = at(t[i]);
+      x[i] = state.x;
+      v[i] = state.v;
+      a[i] = state.a;
+    }
+  }
   // The formula of another phase of the same model, sharing what depends on
   // the model alone (a sampler's next phase).
   virtual std::unique_ptr<const PhaseFormula<Real>> for_phase(
@@ -53,6 +64,20 @@ BasicState<Real> slip_state(const BasicPhase<Real>& phase, const Real& t, const 
     state.v = phase.v_begin;
   }
   return state;
+}
+
+// The states at n times from a formula's columns (for the families whose
+// columns are their fast path), a chunk at a time.
+template <class Real>
+void states_from_columns(const PhaseFormula<Real>& formula, PhaseKind kind, const Real* t,
+                         std::size_t n, BasicState<Real>* out) {
+  constexpr std::size_t kChunk = 64;
+  Real x[kChunk], v[kChunk], a[kChunk];
+  for (std::size_t i = 0; i < n; i += kChunk) {
+    const std::size_t m = n - i < kChunk ? n - i : kChunk;
+    formula.columns(t + i, m, x, v, a);
+    for (std::size_t k = 0; k < m; ++k) out[i + k] = {t[i + k], x[k], v[k], a[k], kind};
+  }
 }
 
 // The formula of the model's family of laws for `phase`.

@@ -21,24 +21,41 @@ inline bool row_decided(unsigned char decided, const BasicPhase<double>& phase, 
          ((decided & kAccelerationDecided) && (t == phase.t_begin || t == phase.t_end));
 }
 
-// Fast: DoubleDoubleSlip or DoubleDoubleOscillator (their evaluate()).
+// The rows at t[0..n) as columns x, v, a. Fast: DoubleDoubleSlip or
+// DoubleDoubleOscillator (their evaluate(), which writes every row); the rows
+// it leaves undecided, and the phase's own ends, are then written again.
 template <class Fast, class LongDoubleAt>
 void fast_slip_rows(const Fast& fast, const BasicPhase<double>& phase, const double* t,
-                    std::size_t n, BasicState<double>* out, const LongDoubleAt& long_double_at) {
-  constexpr std::size_t kChunk = 64;
-  double x[kChunk], v[kChunk], a[kChunk];
+                    std::size_t n, double* x, double* v, double* a,
+                    const LongDoubleAt& long_double_at) {
+  constexpr std::size_t kChunk = 64, kGroup = 8;
+  const double t_begin = phase.t_begin, t_end = phase.t_end;
+  // The common row, decided and inside the phase, stays as written.
+  const auto common = [&](unsigned char decided, double time) {
+    return (decided == kAllDecided) & (time > t_begin) & (time < t_end);  // no branches
+  };
   unsigned char decided[kChunk];
   for (std::size_t i = 0; i < n; i += kChunk) {
     const std::size_t m = std::min(kChunk, n - i);
-    fast.evaluate(t + i, m, x, v, a, decided);
+    fast.evaluate(t + i, m, x + i, v + i, a + i, decided);
     for (std::size_t k = 0; k < m; ++k) {
-      const double time = t[i + k];
-      if (decided[k] == kAllDecided && time > phase.t_begin && time < phase.t_end)
-        out[i + k] = {time, x[k], v[k], a[k], phase.kind};  // the common row, inside the phase
-      else
-        out[i + k] = row_decided(decided[k], phase, time)
-                         ? slip_state(phase, time, x[k], v[k], a[k])
-                         : long_double_at(time);
+      if (k % kGroup == 0 && m - k >= kGroup) {  // a whole group at once, without branches
+        bool all = true;
+        for (std::size_t j = 0; j < kGroup; ++j) all &= common(decided[k + j], t[i + k + j]);
+        if (all) {
+          k += kGroup - 1;
+          continue;
+        }
+      }
+      const std::size_t r = i + k;
+      const double time = t[r];
+      if (common(decided[k], time)) continue;
+      const BasicState<double> state = row_decided(decided[k], phase, time)
+                                           ? slip_state(phase, time, x[r], v[r], a[r])
+                                           : long_double_at(time);
+      x[r] = state.x;
+      v[r] = state.v;
+      a[r] = state.a;
     }
   }
 }

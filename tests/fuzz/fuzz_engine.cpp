@@ -387,11 +387,10 @@ long double force_tolerance(const Model& m, const GeneralScales& g, double t, do
 
 long double speed_tolerance(const GeneralScales& g) { return 1e-9L * g.speed; }
 
-// The phase's rows in one batch equal its single evaluations bit for bit:
-// a batch's whole groups of eight take the dense fast path's eight lanes
-// where the CPU has AVX-512F, a single row its four lanes (or either falls
-// back to long double: the same rule both ways). 17 times: its ends and 15
-// between, two groups of eight and one row.
+// The phase's rows in one batch, as states and as columns, equal its single evaluations bit for
+// bit: a batch's whole groups of eight take the dense fast path's eight lanes where the CPU has
+// AVX-512F, a single row its four lanes (or either falls back to long double: the same rule both
+// ways). 17 times: its ends and 15 between, two groups of eight and one row.
 void check_batch(const Model& m, const Phase& p) {
   constexpr int kBatch = 17;
   double times[kBatch];
@@ -400,12 +399,18 @@ void check_batch(const Model& m, const Phase& p) {
   const frictionref::PhaseEvaluator law(m, p);
   frictionref::State rows[kBatch];
   law(times, kBatch, rows);
+  double x[kBatch], v[kBatch], a[kBatch];  // the same as columns
+  law(times, kBatch, x, v, a);
   for (int k = 0; k < kBatch; ++k) {
     const frictionref::State single = law(times[k]);
     FUZZ_CHECK_AT(std::memcmp(&rows[k].x, &single.x, sizeof(double)) == 0 &&
                       std::memcmp(&rows[k].v, &single.v, sizeof(double)) == 0 &&
                       std::memcmp(&rows[k].a, &single.a, sizeof(double)) == 0 &&
                       rows[k].t == single.t && rows[k].phase == single.phase,
+                  &p);
+    FUZZ_CHECK_AT(std::memcmp(&x[k], &single.x, sizeof(double)) == 0 &&
+                      std::memcmp(&v[k], &single.v, sizeof(double)) == 0 &&
+                      std::memcmp(&a[k], &single.a, sizeof(double)) == 0,
                   &p);
   }
 }

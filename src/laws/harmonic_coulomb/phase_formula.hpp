@@ -46,18 +46,27 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
   }
 
   BasicState<Real> at(const Real& t) const override {
-    BasicState<Real> state;
-    at_many(&t, 1, &state);
+    BasicState<Real> state{t, 0, 0, 0, phase_.kind};
+    columns(&t, 1, &state.x, &state.v, &state.a);
     return state;
   }
 
   void at_many(const Real* t, std::size_t n, BasicState<Real>* out) const override {
-    if (!fast_) {
-      for (std::size_t i = 0; i < n; ++i) out[i] = long_double_at(t[i]);
-      return;
+    states_from_columns(*this, phase_.kind, t, n, out);
+  }
+
+  void columns(const Real* t, std::size_t n, Real* x, Real* v, Real* a) const override {
+    if constexpr (std::is_same_v<Real, double>) {
+      if (fast_)
+        return fast_slip_rows(*fast_, phase_, t, n, x, v, a,
+                              [this](double ti) { return long_double_at(ti); });
     }
-    if constexpr (std::is_same_v<Real, double>)
-      fast_slip_rows(*fast_, phase_, t, n, out, [this](double ti) { return long_double_at(ti); });
+    for (std::size_t i = 0; i < n; ++i) {
+      const BasicState<Real> state = long_double_at(t[i]);
+      x[i] = state.x;
+      v[i] = state.v;
+      a[i] = state.a;
+    }
   }
 
   // The state from the long double law alone (what the fast path must agree

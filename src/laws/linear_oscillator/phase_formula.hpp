@@ -82,18 +82,27 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
   }
 
   BasicState<Real> at(const Real& t) const override {
-    BasicState<Real> state;
-    at_many(&t, 1, &state);
+    BasicState<Real> state{t, 0, 0, 0, phase_.kind};
+    columns(&t, 1, &state.x, &state.v, &state.a);
     return state;
   }
 
   void at_many(const Real* t, std::size_t n, BasicState<Real>* out) const override {
+    states_from_columns(*this, phase_.kind, t, n, out);
+  }
+
+  void columns(const Real* t, std::size_t n, Real* x, Real* v, Real* a) const override {
     if constexpr (std::is_same_v<Real, double>) {
       const auto slow = [this](double ti) { return long_double_at(ti); };
-      if (seed_fast_) return fast_slip_rows(*seed_fast_, phase_, t, n, out, slow);
-      if (oscillator_fast_) return fast_slip_rows(*oscillator_fast_, phase_, t, n, out, slow);
+      if (seed_fast_) return fast_slip_rows(*seed_fast_, phase_, t, n, x, v, a, slow);
+      if (oscillator_fast_) return fast_slip_rows(*oscillator_fast_, phase_, t, n, x, v, a, slow);
     }
-    for (std::size_t i = 0; i < n; ++i) out[i] = long_double_at(t[i]);
+    for (std::size_t i = 0; i < n; ++i) {
+      const BasicState<Real> state = long_double_at(t[i]);
+      x[i] = state.x;
+      v[i] = state.v;
+      a[i] = state.a;
+    }
   }
 
   // The state from the long double laws alone (what the fast path must
