@@ -69,10 +69,13 @@ Summary write_curve_csv(std::FILE* out, const Model& model, UniformSampler& samp
                         const std::function<void(const State&)>& observe) {
   write_metadata(out, model, command, extra_metadata);
   write_state_header(out);
-  State state;
-  while (sampler.next(state)) {
-    write_state_row(out, state);
-    if (observe) observe(state);
+  StateRows rows;
+  while (sampler.next(rows)) {
+    for (std::size_t i = 0; i < rows.size; ++i) {
+      const State state = rows[i];
+      write_state_row(out, state);
+      if (observe) observe(state);
+    }
   }
   return sampler.engine_summary();
 }
@@ -114,9 +117,10 @@ Command add_curve_command(CLI::App& app) {
                     "also write a row at every phase boundary, so plots keep the kinks (a time "
                     "on both the grid and the boundaries appears once)");
   command->add_flag("--force", options->force, "allow more than 10^9 grid rows");
-  command->add_option("--plot", options->plot,
-                      "also draw velocity and position against time into FILE (.svg or .png; "
-                      "needs gnuplot)")
+  command
+      ->add_option("--plot", options->plot,
+                   "also draw velocity and position against time into FILE (.svg or .png; "
+                   "needs gnuplot)")
       ->type_name("FILE");
   command->footer(
       "Computes the exact state at t0, t0 + H, t0 + 2 H, ... (each time computed as t0 + i H,\n"

@@ -130,9 +130,9 @@ py::array on_grid(const PyModel& model, py::handle t_end_object, py::handle dt_o
     py::gil_scoped_release release;
     rows.reserve(grid_rows);
     SignalCheck interrupt;
-    State state;
-    while (sampler.next(state)) {
-      rows.push_back(state_row(state));
+    StateRows block;
+    while (sampler.next(block)) {
+      for (std::size_t i = 0; i < block.size; ++i) rows.push_back(state_row(block[i]));
       interrupt();
     }
   }
