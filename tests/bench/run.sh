@@ -4,9 +4,9 @@
 # streaming commands, and the timing of the 10^5-lambda sweep.
 #   bash tests/bench/run.sh            (from the repository root; ~2 minutes)
 # With BEFORE=<an older build's frictionref_benchmarks> (and BEFORE_LABEL, its
-# commit), the engine's benchmarks also run alternately with that binary
-# (before, after, after, before; 3 repetitions each) and the page gets the
-# before/after ratios of this run (~4 more minutes).
+# commit), the engine's benchmarks also run with that binary, both at the
+# same time on two cores, then with the cores swapped (3 repetitions each),
+# and the page gets the before/after ratios of this run (~2 more minutes).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -31,18 +31,36 @@ build/release/tests/bench/frictionref_benchmarks --benchmark_repetitions=5 \
   --benchmark_report_aggregates_only=true --benchmark_format=json \
   --benchmark_out="$work/bench.json" --benchmark_out_format=json > /dev/null
 
-# Before/after: the same benchmarks of both binaries, alternating.
+# Before/after: the same benchmarks of both binaries at the same time, one
+# per core, then with the cores swapped. This machine's speed drifts from run
+# to run by up to 30 % (a virtual machine's neighbours), far more than most
+# changes measured here; two runs at the same time see the same machine. With
+# one core, or without taskset, they alternate (before, after, after, before).
 compared='BM_Events|BM_DenseSamples|BM_GeneralEvents|BM_GeneralDenseSamples|BM_GeneralRecordSamples|BM_RecordSamples'
+compare_run() {  # binary, output, core (empty: any)
+  local pin=()
+  [[ -n $3 ]] && pin=(taskset -c "$3")
+  "${pin[@]}" "$1" --benchmark_filter="$compared" --benchmark_repetitions=3 \
+    --benchmark_report_aggregates_only=true --benchmark_format=json \
+    --benchmark_out="$2" --benchmark_out_format=json > /dev/null
+}
+after_binary=build/release/tests/bench/frictionref_benchmarks
+compare_mode=alternating
 if [[ -n ${BEFORE:-} ]]; then
-  n=0
-  for side in before after after before; do
-    binary=build/release/tests/bench/frictionref_benchmarks
-    [[ $side == before ]] && binary=$BEFORE
-    n=$((n + 1))
-    "$binary" --benchmark_filter="$compared" --benchmark_repetitions=3 \
-      --benchmark_report_aggregates_only=true --benchmark_format=json \
-      --benchmark_out="$work/compare-$n-$side.json" --benchmark_out_format=json > /dev/null
-  done
+  if (($(nproc) >= 2)) && command -v taskset > /dev/null; then
+    compare_mode=concurrent
+    compare_run "$BEFORE" "$work/compare-1-before.json" 0 &
+    compare_run "$after_binary" "$work/compare-2-after.json" 1 &
+    wait
+    compare_run "$after_binary" "$work/compare-3-after.json" 0 &
+    compare_run "$BEFORE" "$work/compare-4-before.json" 1 &
+    wait
+  else
+    compare_run "$BEFORE" "$work/compare-1-before.json" ""
+    compare_run "$after_binary" "$work/compare-2-after.json" ""
+    compare_run "$after_binary" "$work/compare-3-after.json" ""
+    compare_run "$BEFORE" "$work/compare-4-before.json" ""
+  fi
 fi
 
 # Peak memory (maximum resident set) of the streaming commands.
@@ -70,10 +88,11 @@ fi
 
 python3 - "$work/bench.json" "$events_kib" "$events_s" "$curve_kib" "$curve_s" "$curve_rows" \
   "$curve_bytes" "$small_kib" "$sweep_kib" "$sweep_s" "$work" "${BEFORE_LABEL:-an older build}" \
+  "$compare_mode" \
   > "$work/benchmarks.md" <<'PY'
 import glob, json, os, statistics, sys, datetime, platform, subprocess
 (bench, events_kib, events_s, curve_kib, curve_s, curve_rows, curve_bytes, small_kib,
- sweep_kib, sweep_s, work, before_label) = sys.argv[1:]
+ sweep_kib, sweep_s, work, before_label, compare_mode) = sys.argv[1:]
 data = json.load(open(bench))
 ctx = data["context"]
 cos_ns = float(ctx["cos_call_ns"])
@@ -205,11 +224,18 @@ if compare:
             if b.get("aggregate_name") == "median":
                 runs[side].setdefault(b["run_name"], []).append(1e9 / b["items_per_second"])
     print(f"### Before and after, in this run\n")
-    print(f"Before: the benchmark binary of {before_label}. After: this build's. Run alternately")
-    print("(before, after, after, before; 3 repetitions each, the median of each run), in ns")
-    print("per item, from items per second: the ratio needs no unit, and each process's own")
-    print("measurement of a cos call varies by up to 25 % here. The ratio is of the medians of")
-    print("the runs. A benchmark the older build does not have shows n/a.\n")
+    print(f"Before: the benchmark binary of {before_label}. After: this build's.")
+    if compare_mode == "concurrent":
+        print("Both run at the same time, one per core, then again with the cores swapped")
+        print("(`taskset`; 3 repetitions each, the median of each run): this machine's speed")
+        print("drifts from run to run by up to 30 %, and two runs at the same time see the same")
+        print("machine.")
+    else:
+        print("Run alternately (before, after, after, before; 3 repetitions each, the median of")
+        print("each run).")
+    print("In ns per item, from items per second: the ratio needs no unit, and each process's")
+    print("own measurement of a cos call varies by up to 30 % here. The ratio is of the medians")
+    print("of the runs. A benchmark the older build does not have shows n/a.\n")
     print("| benchmark | before (runs) | after (runs) | after / before |")
     print("|---|---|---|---:|")
     for name in sorted(runs["after"]):
