@@ -10,6 +10,7 @@
 #include "frictionref/model.hpp"
 #include "frictionref/model_fields.hpp"
 #include "frictionref/phase.hpp"
+#include "frictionref/sampling.hpp"
 
 namespace frictionref::cli {
 
@@ -34,8 +35,8 @@ void write_metadata(std::FILE* out, const Model& model, const std::string& comma
 void write_phase_header(std::FILE* out);
 void write_phase_row(std::FILE* out, const Phase& phase);
 
-// curve: "t,x,v,a,phase"
+// curve: "t,x,v,a,phase", a sampler's block of rows at a time
 void write_state_header(std::FILE* out);
-void write_state_row(std::FILE* out, const State& state);
+void write_state_rows(std::FILE* out, const StateRows& rows);
 
 }  // namespace frictionref::cli

@@ -71,11 +71,9 @@ Summary write_curve_csv(std::FILE* out, const Model& model, UniformSampler& samp
   write_state_header(out);
   StateRows rows;
   while (sampler.next(rows)) {
-    for (std::size_t i = 0; i < rows.size; ++i) {
-      const State state = rows[i];
-      write_state_row(out, state);
-      if (observe) observe(state);
-    }
+    write_state_rows(out, rows);
+    if (observe)
+      for (std::size_t i = 0; i < rows.size; ++i) observe(rows[i]);
   }
   return sampler.engine_summary();
 }
