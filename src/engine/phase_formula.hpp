@@ -23,14 +23,7 @@ class PhaseFormula {
   // x, v and a of the same states as columns (their t are the times, their
   // phase the phase's kind): the fast paths write their rows straight into
   // them, and a sampler hands them on without building states.
-  virtual void columns(const Real* t, std::size_t n, Real* x, Real* v, Real* a) const {
-    for (std::size_t i = 0; i < n; ++i) {
-      const BasicState<Real> state = at(t[i]);
-      x[i] = state.x;
-      v[i] = state.v;
-      a[i] = state.a;
-    }
-  }
+  virtual void columns(const Real* t, std::size_t n, Real* x, Real* v, Real* a) const;
   // The formula of another phase of the same model, sharing what depends on
   // the model alone (a sampler's next phase).
   virtual std::unique_ptr<const PhaseFormula<Real>> for_phase(
@@ -64,6 +57,26 @@ BasicState<Real> slip_state(const BasicPhase<Real>& phase, const Real& t, const 
     state.v = phase.v_begin;
   }
   return state;
+}
+
+// Row i of the columns x, v, a from a state.
+template <class Real>
+void put_row(const BasicState<Real>& state, std::size_t i, Real* x, Real* v, Real* a) {
+  x[i] = state.x;
+  v[i] = state.v;
+  a[i] = state.a;
+}
+
+// The columns at n times from a state per time (state_at(t)).
+template <class Real, class StateAt>
+void columns_of_states(const StateAt& state_at, const Real* t, std::size_t n, Real* x, Real* v,
+                       Real* a) {
+  for (std::size_t i = 0; i < n; ++i) put_row(state_at(t[i]), i, x, v, a);
+}
+
+template <class Real>
+void PhaseFormula<Real>::columns(const Real* t, std::size_t n, Real* x, Real* v, Real* a) const {
+  columns_of_states([this](const Real& time) { return at(time); }, t, n, x, v, a);
 }
 
 // The states at n times from a formula's columns (for the families whose

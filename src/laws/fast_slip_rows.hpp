@@ -50,12 +50,9 @@ void fast_slip_rows(const Fast& fast, const BasicPhase<double>& phase, const dou
       const std::size_t r = i + k;
       const double time = t[r];
       if (common(decided[k], time)) continue;
-      const BasicState<double> state = row_decided(decided[k], phase, time)
-                                           ? slip_state(phase, time, x[r], v[r], a[r])
-                                           : long_double_at(time);
-      x[r] = state.x;
-      v[r] = state.v;
-      a[r] = state.a;
+      put_row(row_decided(decided[k], phase, time) ? slip_state(phase, time, x[r], v[r], a[r])
+                                                   : long_double_at(time),
+              r, x, v, a);
     }
   }
 }

@@ -61,12 +61,7 @@ class HarmonicCoulombFormula final : public PhaseFormula<Real> {
         return fast_slip_rows(*fast_, phase_, t, n, x, v, a,
                               [this](double ti) { return long_double_at(ti); });
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      const BasicState<Real> state = long_double_at(t[i]);
-      x[i] = state.x;
-      v[i] = state.v;
-      a[i] = state.a;
-    }
+    columns_of_states([this](const Real& time) { return long_double_at(time); }, t, n, x, v, a);
   }
 
   // The state from the long double law alone (what the fast path must agree

@@ -97,12 +97,7 @@ class LinearOscillatorFormula final : public PhaseFormula<Real> {
       if (seed_fast_) return fast_slip_rows(*seed_fast_, phase_, t, n, x, v, a, slow);
       if (oscillator_fast_) return fast_slip_rows(*oscillator_fast_, phase_, t, n, x, v, a, slow);
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      const BasicState<Real> state = long_double_at(t[i]);
-      x[i] = state.x;
-      v[i] = state.v;
-      a[i] = state.a;
-    }
+    columns_of_states([this](const Real& time) { return long_double_at(time); }, t, n, x, v, a);
   }
 
   // The state from the long double laws alone (what the fast path must
