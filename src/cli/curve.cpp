@@ -115,10 +115,9 @@ Command add_curve_command(CLI::App& app) {
                     "also write a row at every phase boundary, so plots keep the kinks (a time "
                     "on both the grid and the boundaries appears once)");
   command->add_flag("--force", options->force, "allow more than 10^9 grid rows");
-  command
-      ->add_option("--plot", options->plot,
-                   "also draw velocity and position against time into FILE (.svg or .png; "
-                   "needs gnuplot)")
+  command->add_option("--plot", options->plot,
+                      "also draw velocity and position against time into FILE (.svg or .png; "
+                      "needs gnuplot)")
       ->type_name("FILE");
   command->footer(
       "Computes the exact state at t0, t0 + H, t0 + 2 H, ... (each time computed as t0 + i H,\n"
