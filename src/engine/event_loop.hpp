@@ -16,6 +16,12 @@
 //       the first stop of the slip (v = 0) before tau_end, or the state at
 //       tau_end; throws RootFailure if a root solver failed.
 //
+// A family may also replay a cycle that repeats exactly (the seed's, with
+// dead bands: laws/harmonic_coulomb/cycle_replay.hpp), through
+//   CycleReplay& cycle_replay()
+//       with start(min_cycles) at each breakaway (true: replay from here),
+//       then next(ReplayedPhase&) for every phase to the horizon.
+//
 // Time is the forcing phase tau = w t (w = model.omega) in the work type;
 // phases are emitted in user time.
 #pragma once
@@ -24,6 +30,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "engine/engine_core.hpp"
 #include "engine/scalar_traits.hpp"
@@ -58,6 +66,25 @@ struct SlipEnd {
   int next_direction = 0;    // after a stop: +1 / -1 slides on at once, 0 sticks
 };
 
+// A phase of a replayed cycle, rounded to Real: it starts at rest where the
+// phase before ended, and ends at a stop or breakaway (v = 0) or at the
+// horizon, which ends the run.
+template <class Real>
+struct ReplayedPhase {
+  PhaseKind kind = PhaseKind::stick;
+  Real t_end = 0, x_end = 0, v_end = 0;
+  Real acceleration = 0;  // left limit at the end
+  // What ends it (counted in the summary), or the horizon.
+  bool stop = false, reversal = false, breakaway = false, at_horizon = false;
+  int rounded_in_50_digits = 0;  // of t_end and x_end (the rest in double-double)
+};
+
+template <class Family, class = void>
+struct replays_cycles : std::false_type {};
+template <class Family>
+struct replays_cycles<Family, std::void_t<decltype(std::declval<Family&>().cycle_replay())>>
+    : std::true_type {};
+
 template <class Real, class Family>
 class EventLoop final : public EngineCore<Real> {
  public:
@@ -70,6 +97,8 @@ class EventLoop final : public EngineCore<Real> {
   const BasicSummary<Real>& summary() const override { return summary_; }
   const BasicModel<Real>& model() const override { return model_; }
   const Real& t_end() const override { return t_end_; }
+  // The family's own state (for tests: a replay's base).
+  const Family& family() const { return family_; }
 
  private:
   enum class Mode { stick, slip };
@@ -79,6 +108,8 @@ class EventLoop final : public EngineCore<Real> {
   // Fills `phase` unless it is shorter than the resolution of Real.
   bool emit(BasicPhase<Real>& phase, PhaseKind kind, const Work& tau_end, const Work& x_end,
             const Work& v_end, const Work& acceleration, bool at_horizon);
+  // Emits a phase of a replayed cycle.
+  void emit_replayed(BasicPhase<Real>& phase, const ReplayedPhase<Real>& replayed);
   static const BasicModel<Real>& validated(const BasicModel<Real>& model);
   static Work validated_tau(const BasicModel<Real>& model, const Real& t_end);
 
@@ -94,6 +125,8 @@ class EventLoop final : public EngineCore<Real> {
   Mode mode_ = Mode::stick;
   int sign_ = 0;  // slip direction when mode_ == slip
   bool done_ = false;
+  bool replaying_ = false;  // the family's cycle replay emits the phases
+  Real replayed_x_ = 0;     // x at the end of the last replayed phase
 };
 
 // Checks in the order the messages have always come (docs/reliability.md):
@@ -167,6 +200,30 @@ bool EventLoop<Real, Family>::emit(BasicPhase<Real>& phase, PhaseKind kind, cons
 }
 
 template <class Real, class Family>
+void EventLoop<Real, Family>::emit_replayed(BasicPhase<Real>& phase,
+                                            const ReplayedPhase<Real>& replayed) {
+  phase.kind = replayed.kind;
+  phase.t_begin = t_current_;
+  phase.t_end = replayed.t_end;
+  phase.x_begin = replayed_x_;
+  phase.x_end = replayed.x_end;
+  phase.v_begin = 0;
+  phase.v_end = replayed.v_end;
+  t_current_ = replayed.t_end;
+  replayed_x_ = replayed.x_end;
+  ++summary_.phases;
+  ++summary_.phases_by_kind[static_cast<int>(replayed.kind)];
+  summary_.stops += replayed.stop;
+  summary_.reversals += replayed.reversal;
+  summary_.breakaways += replayed.breakaway;
+  ++summary_.replayed_phases;
+  summary_.replay_values_in_50_digits += static_cast<std::uint64_t>(replayed.rounded_in_50_digits);
+  summary_.final_state = {phase.t_end, phase.x_end, phase.v_end, replayed.acceleration,
+                          replayed.kind};
+  if (replayed.at_horizon) done_ = true;
+}
+
+template <class Real, class Family>
 bool EventLoop<Real, Family>::fail(RootStatus status, const char* what) {
   done_ = true;
   summary_.termination = Termination::numerical_failure;
@@ -197,6 +254,14 @@ bool EventLoop<Real, Family>::next(BasicPhase<Real>& phase) {
                          " phases, before t_end";
       return false;
     }
+    if constexpr (replays_cycles<Family>::value) {
+      if (replaying_) {  // to the horizon
+        ReplayedPhase<Real> replayed;
+        family_.cycle_replay().next(replayed);
+        emit_replayed(phase, replayed);
+        return true;
+      }
+    }
     if (mode_ == Mode::stick) {
       Breakaway<Work> breakaway;
       try {
@@ -217,6 +282,10 @@ bool EventLoop<Real, Family>::next(BasicPhase<Real>& phase) {
         sign_ = breakaway.direction;
         tau_ = breakaway.tau;
         v_ = 0;
+        if constexpr (replays_cycles<Family>::value) {
+          replaying_ = family_.cycle_replay().start(options_.replay_min_cycles);
+          replayed_x_ = Real(x_);
+        }
       } else {
         done_ = true;
       }

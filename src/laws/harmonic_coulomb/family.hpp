@@ -21,6 +21,7 @@
 #include "engine/event_loop.hpp"
 #include "engine/motion_range.hpp"
 #include "engine/scalar_traits.hpp"
+#include "laws/harmonic_coulomb/cycle_replay.hpp"
 #include "laws/harmonic_coulomb/force_crossings.hpp"
 #include "laws/harmonic_coulomb/phase_law.hpp"
 #include "laws/harmonic_coulomb/stop_predictions.hpp"
@@ -42,6 +43,10 @@ class HarmonicCoulombFamily {
   int direction_at_rest(const Work& tau, const Work& x);
   Breakaway<Work> stick_end(const Work& tau, const Work& x);
   SlipEnd<Work> slip_end(const PhaseStart<Work>& start);
+  // The steady cycle's replay (event_loop.hpp, cycle_replay.hpp); it sees
+  // every stop and breakaway.
+  CycleReplay<Real>& cycle_replay() { return replay_; }
+  const CycleReplay<Real>& cycle_replay() const { return replay_; }
 
  private:
   // At v = 0 at forcing phase tau (sin tau given): returns the slip direction
@@ -86,6 +91,7 @@ class HarmonicCoulombFamily {
   SinCos<Work> trig_{0, 1};
   int carried_starts_ = 0;
   StopPredictions<Work> predictions_;
+  CycleReplay<Real> replay_;
 };
 
 template <class Real>
@@ -100,6 +106,7 @@ HarmonicCoulombFamily<Real>::HarmonicCoulombFamily(const BasicModel<Real>& model
   const ForceCrossings<Work> crossings(b_, r_);
   crosses_ = crossings.crosses();
   alpha_ = crossings.alpha();
+  replay_ = CycleReplay<Real>(model, t_end, crosses_, alpha_, tau_end);
   if (crosses_) {
     // time_resolution = 8 eps |tau|: the window pi - 2 alpha is 4 of them at
     // |tau| = window / (32 eps). Only for lambda within ~1e-14 of 1.
@@ -178,7 +185,6 @@ int HarmonicCoulombFamily<Real>::direction_at_rest(const Work& tau, const Work& 
 template <class Real>
 Breakaway<typename HarmonicCoulombFamily<Real>::Work> HarmonicCoulombFamily<Real>::stick_end(
     const Work& tau, const Work& x) {
-  (void)x;
   Breakaway<Work> result;
   if (!crosses_) return result;  // lambda >= 1 or B = 0: nothing breaks away
   // The first breakaway whose force window is resolvable (|w t| below
@@ -194,6 +200,7 @@ Breakaway<typename HarmonicCoulombFamily<Real>::Work> HarmonicCoulombFamily<Real
     trig_tau_ = result.tau;
     trig_ = sin_cos(result.tau);
     carried_starts_ = 0;
+    replay_.observe_breakaway(result.tau, x, result.direction);
   }
   return result;
 }
@@ -206,6 +213,7 @@ SlipEnd<typename HarmonicCoulombFamily<Real>::Work> HarmonicCoulombFamily<Real>:
   Point end;
   int next = 0;
   SlipEnd<Work> result;
+  const std::uint64_t fragile = summary_->touches + summary_->merged_sticks;
   result.stops = find_slip_end(law, start, end, next);
   if (!result.stops) end = law.point(tau_end_);
   result.tau = end.tau;
@@ -213,6 +221,9 @@ SlipEnd<typename HarmonicCoulombFamily<Real>::Work> HarmonicCoulombFamily<Real>:
   result.v = result.stops ? Work(0) : Work(law.sign()) * end.speed;
   result.acceleration = law.acceleration_at(end.at);
   result.next_direction = next;
+  if (result.stops)
+    replay_.observe_stop(kind, result.tau, result.x,
+                         summary_->touches + summary_->merged_sticks == fragile);
   if (result.stops && next != 0) {
     // The next slip starts here: carry sin, cos of the stop, recomputed
     // fresh now and then so rounding cannot build up.
