@@ -54,7 +54,8 @@ std::string BasicSummary<Real>::brief_report() const {
        << " reversals=" << reversals << " breakaways=" << breakaways
        << " merged_sticks=" << merged_sticks << " touches=" << touches
        << " sign_tests=" << sign_tests << " root_function_calls=" << root_function_calls
-       << " predicted_stops=" << predicted_stops << " t=" << final_state.t << " x=" << final_state.x
+       << " predicted_stops=" << predicted_stops << " replayed_phases=" << replayed_phases
+       << " t=" << final_state.t << " x=" << final_state.x
        << " v=" << final_state.v;
   return text.str();
 }

@@ -41,7 +41,9 @@
 //   byte 1      flags: bit 0 friction field is lambda (R = lambda B);
 //               bits 1-2 t_end field: 0 absolute t_end, 1 span (t_end = t0 + span),
 //               2-3 forcing periods (t_end = t0 + n 2 pi / w);
-//               bit 3 v0 is in units of B / (m w); bit 4 max_phases follows (uint16)
+//               bit 3 v0 is in units of B / (m w); bit 4 max_phases follows (uint16);
+//               bit 7 replay the seed's steady cycle from the first one on
+//               (SolveOptions::replay_min_cycles = 1, docs/theory.md 3.6)
 //   fields      mass, amplitude, omega, friction|lambda, x0, v0, t0, t_end|span|periods
 //   [2 bytes]   max_phases (little endian), if flag bit 4
 //   the general model, if flag bit 5 (docs/theory.md 7):
@@ -781,6 +783,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   SolveOptions options;
   const bool limited = (flags & 16) != 0;
   if (limited) options.max_phases = bytes.little_endian(2);
+  if (flags & 128) options.replay_min_cycles = 1;
   if (flags & 32) {
     const std::uint8_t general = bytes.byte();
     const auto next = [&](int bit) {

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Seed inputs of the general model for fuzz_engine (tests/fuzz/corpus/engine/general-*,
-record-*: with a ground record).
+record-*: with a ground record), and of the seed's model with its steady cycle replayed
+(replay-*: flag bit 7).
 
 Each seed is a model of the general family written in fuzz_engine's input
 layout (see the comment at the top of tests/fuzz/fuzz_engine.cpp) with every
@@ -8,7 +9,7 @@ field as a decimal m * 10^e. Run from the repository root:
 
     python3 tests/fuzz/tools/make_engine_seeds.py
 
-It rewrites the general-* and record-* files; the other seeds are untouched.
+It rewrites the general-*, record-* and replay-* files; the other seeds are untouched.
 """
 import pathlib
 import struct
@@ -70,6 +71,23 @@ RECORD_SEEDS = {
     "record-damper-only": (one, zero, one, (2, -1), zero, (5, -1), zero, (1, 0), zero, zero, (1, 0), zero, []),
 }
 
+def replay_seed(mass, amplitude, omega, friction, x0, v0, t0, periods):
+    """The seed's model (no general block), t_end in periods, the cycle replayed (bit 7)."""
+    out = bytes([0x00, (2 << 1) | 128])
+    for field in (mass, amplitude, omega, friction, x0, v0, t0, periods):
+        out += decimal(*field)
+    return out
+
+
+REPLAY_SEEDS = {
+    # name: (mass, B, w, R, x0, v0, t0, periods)
+    "replay-dead-bands": (one, one, one, (7, -1), zero, zero, zero, (20, 0)),
+    "replay-moving-start": (one, one, (3, 0), (8, -1), (3, -1), (-1, 0), (2, -1), (30, 0)),
+    "replay-near-one": (one, one, one, (999, -3), (5, 0), zero, zero, (40, 0)),
+    "replay-far-phase": (one, one, one, (6, -1), zero, zero, (1, 8), (25, 0)),
+}
+
+
 def main():
     corpus = pathlib.Path("tests/fuzz/corpus/engine")
     for name, fields in SEEDS.items():
@@ -78,7 +96,9 @@ def main():
         (corpus / name).write_bytes(seed(*fields, record=RECORD))
     for name in ("record-rigid", "record-spring"):
         (corpus / (name + "-one-way")).write_bytes(seed(*RECORD_SEEDS[name], record=RECORD, one_way=True))
-    print(f"wrote {len(SEEDS) + len(RECORD_SEEDS) + 2} seeds to {corpus}")
+    for name, fields in REPLAY_SEEDS.items():
+        (corpus / name).write_bytes(replay_seed(*fields))
+    print(f"wrote {len(SEEDS) + len(RECORD_SEEDS) + 2 + len(REPLAY_SEEDS)} seeds to {corpus}")
 
 
 if __name__ == "__main__":
