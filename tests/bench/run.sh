@@ -106,7 +106,8 @@ def cpu():
         pass
     return platform.processor() or "unknown"
 rows = [b for b in data["benchmarks"] if b.get("aggregate_name") == "median"]
-targets = {"BM_Events": ("event", 5), "BM_DenseSamples": ("sample", 1),
+targets = {"BM_Events": ("event", 5), "BM_EventsEventByEvent": ("event", None),
+           "BM_DenseSamples": ("sample", 1),
            "BM_StiffSpringSteps": ("step", 1), "BM_StdCos": ("cos call", None),
            "BM_RecordSamples": ("record sample", 2), "BM_NewmarkSamples": ("record sample", None),
            "BM_SlammerSamples": ("record sample", None),
@@ -138,7 +139,8 @@ for b in rows:
     units = per_item_ns / cos_ns
     label = name
     verdict = ""
-    if family in ("BM_Events", "BM_DenseSamples", "BM_StiffSpringSteps") and "/" in name:
+    if family in ("BM_Events", "BM_EventsEventByEvent", "BM_DenseSamples",
+                  "BM_StiffSpringSteps") and "/" in name:
         label = f"{family} lambda={int(name.split('/')[1]) / 100:g}"
     if family == "BM_DenseFormula":
         parts = dict(p.split(":") for p in name.split("/")[1:])
@@ -203,11 +205,18 @@ if general_dense:
                     for b in general_dense) + " of slip rows left to long double.\n")
 events = [b for b in rows if b["run_name"].startswith("BM_Events")]
 if events:
-    print("Root-function evaluations (one sin_cos each) and sign tests per event in the same runs:\n")
-    print("| benchmark | root calls per event | sign tests per event |")
-    print("|---|---:|---:|")
+    print("Root-function evaluations (one sin_cos each) and sign tests per event in the same runs;")
+    print("the share of events replayed from the 50-digit steady cycle (`BM_Events`, the engine's")
+    print("default: theory.md 3.6), and of their times and positions the share the double-double")
+    print("bound could not round (then rounded from 50 digits):\n")
+    print("| benchmark | root calls per event | sign tests per event | replayed | of their values in 50 digits |")
+    print("|---|---:|---:|---:|---:|")
     for b in events:
-        print(f"| {b['run_name']} | {b['root_calls_per_event']:.3f} | {b['sign_tests_per_event']:.3f} |")
+        replayed = b.get("replayed_share")
+        share = (f"{100 * replayed:.2f} %" if replayed is not None else "n/a")
+        fallback = (f"{100 * b['in_50_digits_share']:.3f} %" if replayed else "n/a")
+        print(f"| {b['run_name']} | {b['root_calls_per_event']:.3f} | {b['sign_tests_per_event']:.3f} "
+              f"| {share} | {fallback} |")
     print()
 if batch:
     b = batch[0]
