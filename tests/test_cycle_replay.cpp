@@ -1,5 +1,5 @@
 // The seed's steady cycle, computed once in 50 digits and replayed
-// (docs/theory.md 3.6; SolveOptions::replay_min_cycles), against the same
+// (docs/theory.md 3.9; SolveOptions::replay_min_cycles), against the same
 // engine event by event (replay_min_cycles = 0) and against an independent
 // 50-digit run: the 50-digit engine, event by event, started at the replay's
 // base (the breakaway alpha + n0 pi, computed in 50 digits, with the work

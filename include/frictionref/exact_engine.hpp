@@ -36,7 +36,7 @@ struct SolveOptions {
   std::uint64_t max_phases = std::numeric_limits<std::uint64_t>::max();
 
   // The seed's model with dead bands repeats exactly from its first breakaway
-  // on (docs/theory.md 3.6). Once a whole cycle from one breakaway to the
+  // on (docs/theory.md 3.9). Once a whole cycle from one breakaway to the
   // next has been computed and at least this many cycles remain before
   // t_end, the engine computes the cycle once in 50 digits and emits the
   // following ones from it, each number correctly rounded, instead of event

@@ -1,7 +1,7 @@
 // Events per second of the exact engine over 10^4 forcing periods, and the
 // cost of one event in std::cos calls (docs/benchmarks.md): as the engine
 // runs by default (with dead bands, the steady cycle replayed from 50 digits
-// after the first one: docs/theory.md 3.6) and event by event
+// after the first one: docs/theory.md 3.9) and event by event
 // (SolveOptions::replay_min_cycles = 0).
 #include <benchmark/benchmark.h>
 

@@ -1,4 +1,4 @@
-// Replaying the seed's steady cycle (docs/theory.md 3.6, steady_cycle.hpp).
+// Replaying the seed's steady cycle (docs/theory.md 3.9, steady_cycle.hpp).
 //
 // The family reports every stop and breakaway here. At a breakaway the event
 // loop asks whether to replay: yes when the cycle it has just finished (from

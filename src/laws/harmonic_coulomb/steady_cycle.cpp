@@ -1,5 +1,5 @@
 // The seed's steady cycle in 50 digits, and its replay in double-double
-// (steady_cycle.hpp, docs/theory.md 3.6).
+// (steady_cycle.hpp, docs/theory.md 3.9).
 #include "laws/harmonic_coulomb/steady_cycle.hpp"
 
 #include <boost/math/constants/constants.hpp>
@@ -16,7 +16,7 @@ namespace {
 
 // Double-double arithmetic (Dekker, Knuth): a value hi + lo with |lo| <=
 // ulp(hi) / 2. Every sum below adds terms of known size; the replay's error
-// bound is 2^-100 times the sum of their magnitudes (theory.md 3.6), some 50
+// bound is 2^-100 times the sum of their magnitudes (theory.md 3.9), some 50
 // times the few u^2 these operations lose.
 using Pair = SteadyCycle::Pair;
 

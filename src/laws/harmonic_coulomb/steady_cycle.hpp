@@ -1,5 +1,5 @@
 // The seed's steady cycle, computed once in 50 digits and replayed
-// (docs/theory.md 3.6).
+// (docs/theory.md 3.9).
 //
 // With lambda < 1 the motion after a breakaway depends on nothing but the
 // breakaway: the force is B sin(w t), nothing depends on x, and a slip from
