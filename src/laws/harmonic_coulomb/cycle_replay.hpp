@@ -13,6 +13,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <type_traits>
 
@@ -112,7 +113,6 @@ class CycleReplay {
       const SteadyCycle::Phase& phase = cycle_->phase(phase_index_);
       const SteadyCycle::End end = cycle_->end(shift_, phase_index_);
       out.kind = end.kind;
-      out.rounded_in_50_digits = end.rounded_in_50_digits;
       if (!(end.t < t_end_)) {
         // The horizon falls in this phase (or its end rounds to it): the
         // event loop's rules there (event_loop.hpp), nothing counted.
@@ -123,8 +123,10 @@ class CycleReplay {
         out.acceleration = at.acceleration;
         out.stop = out.reversal = out.breakaway = false;
         out.at_horizon = true;
+        out.rounded_in_50_digits = 0;  // the horizon's values come from 50 digits anyway
         return;
       }
+      out.rounded_in_50_digits = end.rounded_in_50_digits;
       out.t_end = end.t;
       out.x_end = end.x;
       out.v_end = 0;
@@ -172,11 +174,7 @@ class CycleReplay {
     for (std::size_t i = 0; i < count; ++i) {
       const Seen& seen = seen_[closed][i];
       const SteadyCycle::Phase& phase = cycle_->phase(i);
-      const PhaseKind kind = closed_direction_ > 0                    ? phase.kind
-                             : phase.kind == PhaseKind::slip_forward  ? PhaseKind::slip_backward
-                             : phase.kind == PhaseKind::slip_backward ? PhaseKind::slip_forward
-                                                                      : PhaseKind::stick;
-      if (seen.kind != kind) return false;
+      if (seen.kind != (closed_direction_ > 0 ? phase.kind : mirrored(phase.kind))) return false;
       const Work tau = static_cast<Work>(phase.tau_end);
       const Work x = Work(closed_direction_) * static_cast<Work>(phase.x_end);
       if (!(fabs(seen.tau - closed_start_tau_ - tau) <= time_slack)) return false;

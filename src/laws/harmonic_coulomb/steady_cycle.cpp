@@ -82,18 +82,6 @@ bool decided(const Pair& value, double error, double& rounded) {
   return false;
 }
 
-PhaseKind mirrored(PhaseKind kind) {
-  switch (kind) {
-    case PhaseKind::slip_forward:
-      return PhaseKind::slip_backward;
-    case PhaseKind::slip_backward:
-      return PhaseKind::slip_forward;
-    case PhaseKind::stick:
-      break;
-  }
-  return PhaseKind::stick;
-}
-
 constexpr double kErrorPerMagnitude = 0x1p-100;
 
 }  // namespace
@@ -124,7 +112,9 @@ std::optional<SteadyCycle> SteadyCycle::compute(const Model& model) {
     HighPrecision previous_tau = 0;
     while (engine.next(p)) {
       const BasicSummary<HighPrecision>& now = engine.summary();
-      if (now.touches != before.touches) return std::nullopt;  // grazes
+      // A touch or a merged stick: decided within rounding, not robust.
+      if (now.touches != before.touches || now.merged_sticks != before.merged_sticks)
+        return std::nullopt;
       const HighPrecision tau = start.omega * p.t_end - alpha;
       if (cycle.phases_.empty() && p.kind != PhaseKind::slip_forward) {
         // The start is a breakaway: only a stick within rounding of it may

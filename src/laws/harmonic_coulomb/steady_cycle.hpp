@@ -29,6 +29,13 @@
 
 namespace frictionref::detail {
 
+// The kind of a phase under x -> -x: slip+ and slip- swap, a stick stays.
+inline PhaseKind mirrored(PhaseKind kind) {
+  return kind == PhaseKind::slip_forward    ? PhaseKind::slip_backward
+         : kind == PhaseKind::slip_backward ? PhaseKind::slip_forward
+                                            : PhaseKind::stick;
+}
+
 class SteadyCycle {
  public:
   // A phase of the cycle from the forward breakaway at alpha with x = 0.
@@ -60,7 +67,7 @@ class SteadyCycle {
   // The cycle of the seed's model (is_harmonic_coulomb(), lambda < 1) from a
   // forward breakaway to the next breakaway, by the 50-digit engine; none if
   // the motion does not stick and break away again within three periods, or
-  // grazes (a touch: the cycle would not be robust to rounding).
+  // grazes or merges a stick (decided within rounding: not robust).
   static std::optional<SteadyCycle> compute(const Model& model);
 
   std::size_t size() const { return phases_.size(); }
