@@ -243,8 +243,8 @@ TEST(CycleReplay, EveryReplayedValueIsCorrectlyRounded) {
 
 // The default replays only long runs (SolveOptions::replay_min_cycles =
 // 1024 whole cycles left): the seed's lambda = 0.7 over 100 periods goes
-// event by event, over 10^4 periods all but the first and last cycles are
-// replayed, with no value needing 50 digits.
+// event by event; over 10^4 periods everything after the first whole cycle
+// is replayed, to the horizon, with no value needing 50 digits.
 TEST(CycleReplay, DefaultReplaysOnlyLongRuns) {
   Model model;
   model.friction = 0.7;

@@ -38,11 +38,10 @@ struct SolveOptions {
   // The seed's model with dead bands repeats exactly from its first breakaway
   // on (docs/theory.md 3.9). Once a whole cycle from one breakaway to the
   // next has been computed and at least this many cycles remain before
-  // t_end, the engine computes the cycle once in 50 digits and emits the
-  // following ones from it, each number correctly rounded, instead of event
-  // by event; the last cycle is computed event by event again. 0 turns this
-  // off. The default keeps the 50-digit cycle (about 0.25 ms) below a tenth
-  // of the time it saves.
+  // t_end, the engine computes the cycle once in 50 digits and emits every
+  // later phase from it, to the horizon, each number correctly rounded,
+  // instead of event by event. 0 turns this off. The default keeps the
+  // 50-digit cycle (about 0.25 ms) below a tenth of the time it saves.
   std::uint64_t replay_min_cycles = 1024;
 
   // Throws InvalidInput naming the field and the rule.
