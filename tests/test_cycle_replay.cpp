@@ -32,17 +32,12 @@ SolveOptions replay_after(std::uint64_t cycles) {
   return options;
 }
 
-std::vector<Phase> phases_of(BasicExactEngine<double>& engine) {
+// Every phase of an engine or of the event loop itself.
+template <class Stream>
+std::vector<Phase> phases_of(Stream& stream) {
   std::vector<Phase> phases;
   Phase phase;
-  while (engine.next(phase)) phases.push_back(phase);
-  return phases;
-}
-
-std::vector<Phase> phases_of(Loop& loop) {
-  std::vector<Phase> phases;
-  Phase phase;
-  while (loop.next(phase)) phases.push_back(phase);
+  while (stream.next(phase)) phases.push_back(phase);
   return phases;
 }
 

@@ -110,6 +110,8 @@ class EventLoop final : public EngineCore<Real> {
             const Work& v_end, const Work& acceleration, bool at_horizon);
   // Emits a phase of a replayed cycle.
   void emit_replayed(BasicPhase<Real>& phase, const ReplayedPhase<Real>& replayed);
+  // Counts an emitted phase in the summary and moves the current time to its end.
+  void account(const BasicPhase<Real>& phase, const Real& acceleration);
   static const BasicModel<Real>& validated(const BasicModel<Real>& model);
   static Work validated_tau(const BasicModel<Real>& model, const Real& t_end);
 
@@ -192,11 +194,16 @@ bool EventLoop<Real, Family>::emit(BasicPhase<Real>& phase, PhaseKind kind, cons
   phase.x_end = Real(x_end);
   phase.v_begin = Real(v_);
   phase.v_end = Real(v_end);
-  t_current_ = t_end;
-  ++summary_.phases;
-  ++summary_.phases_by_kind[static_cast<int>(kind)];
-  summary_.final_state = {phase.t_end, phase.x_end, phase.v_end, Real(acceleration), kind};
+  account(phase, Real(acceleration));
   return true;
+}
+
+template <class Real, class Family>
+void EventLoop<Real, Family>::account(const BasicPhase<Real>& phase, const Real& acceleration) {
+  t_current_ = phase.t_end;
+  ++summary_.phases;
+  ++summary_.phases_by_kind[static_cast<int>(phase.kind)];
+  summary_.final_state = {phase.t_end, phase.x_end, phase.v_end, acceleration, phase.kind};
 }
 
 template <class Real, class Family>
@@ -209,17 +216,13 @@ void EventLoop<Real, Family>::emit_replayed(BasicPhase<Real>& phase,
   phase.x_end = replayed.x_end;
   phase.v_begin = 0;
   phase.v_end = replayed.v_end;
-  t_current_ = replayed.t_end;
+  account(phase, replayed.acceleration);
   replayed_x_ = replayed.x_end;
-  ++summary_.phases;
-  ++summary_.phases_by_kind[static_cast<int>(replayed.kind)];
   summary_.stops += replayed.stop;
   summary_.reversals += replayed.reversal;
   summary_.breakaways += replayed.breakaway;
   ++summary_.replayed_phases;
   summary_.replay_values_in_50_digits += static_cast<std::uint64_t>(replayed.rounded_in_50_digits);
-  summary_.final_state = {phase.t_end, phase.x_end, phase.v_end, replayed.acceleration,
-                          replayed.kind};
   if (replayed.at_horizon) done_ = true;
 }
 

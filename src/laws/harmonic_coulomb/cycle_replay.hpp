@@ -39,7 +39,7 @@ class CycleReplay {
   // A slip of this kind stopped at tau with x; `clean`: no touch and no
   // merged stick on the way (either makes the cycle fragile to rounding).
   void observe_stop(PhaseKind kind, const Work& tau, const Work& x, bool clean) {
-    if (!open_) return;
+    if (!watching() || !open_) return;
     clean_ = clean_ && clean;
     append(kind, tau, x);
   }
@@ -47,6 +47,7 @@ class CycleReplay {
   // A stick at x ended in a breakaway at tau in `direction`: closes the cycle
   // since the breakaway before and opens the next one.
   void observe_breakaway(const Work& tau, const Work& x, int direction) {
+    if (!watching()) return;
     if (open_) append(PhaseKind::stick, tau, x);
     closed_ = open_ && clean_ && count_[current_] <= kMaxPhases;
     closed_start_tau_ = start_tau_;
@@ -156,6 +157,10 @@ class CycleReplay {
     if (count < kMaxPhases) seen_[current_][count] = {kind, tau, x};
     ++count;
   }
+
+  // Whether a replay may still start: not in the 50-digit engine itself,
+  // nor once given up (then nothing is worth recording).
+  bool watching() const { return std::is_same_v<Real, double> && !disabled_; }
 
   bool disable() {
     disabled_ = true;
