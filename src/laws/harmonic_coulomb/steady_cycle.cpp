@@ -4,86 +4,21 @@
 
 #include <boost/math/constants/constants.hpp>
 #include <cmath>
-#include <cstring>
 
 #include "frictionref/error.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "laws/harmonic_coulomb/phase_law.hpp"
+#include "numeric/double_double_scalar.hpp"
 #include "numeric/sin_cos.hpp"
 
 namespace frictionref::detail {
 namespace {
-
-// Double-double arithmetic (Dekker, Knuth): a value hi + lo with |lo| <=
-// ulp(hi) / 2. Every sum below adds terms of known size; the replay's error
-// bound is 2^-100 times the sum of their magnitudes (theory.md 3.9), some 50
-// times the few u^2 these operations lose.
 using Pair = SteadyCycle::Pair;
-
-Pair two_sum(double a, double b) {
-  const double s = a + b;
-  const double bb = s - a;
-  return {s, (a - (s - bb)) + (b - bb)};
-}
-
-Pair fast_two_sum(double a, double b) {  // |a| >= |b| or a == 0
-  const double s = a + b;
-  return {s, b - (s - a)};
-}
-
-// The low parts summed in plain double: an error of at most about
-// 4 u^2 (|a| + |b|), within the bound's 2^-100 = 64 u^2 per magnitude. The
-// last step is a two-sum, not a fast one: with cancellation in the leading
-// parts the low parts may be the larger.
-Pair add(const Pair& a, const Pair& b) {
-  const Pair s = two_sum(a.hi, b.hi);
-  return two_sum(s.hi, s.lo + (a.lo + b.lo));
-}
-
-// k a for an integer k (exact in a double).
-Pair scaled(double k, const Pair& a) {
-  const double hi = k * a.hi;
-  const double error = std::fma(k, a.hi, -hi);
-  return fast_two_sum(hi, error + k * a.lo);
-}
-
-Pair split(const HighPrecision& value) {
-  const double hi = static_cast<double>(value);
-  return {hi, static_cast<double>(value - HighPrecision(hi))};
-}
-
-Pair split(const long double& value) {  // exact: 64 bits fit in 106
-  const double hi = static_cast<double>(value);
-  return {hi, static_cast<double>(value - static_cast<long double>(hi))};
-}
-
-// The double nearest to a value within `error` of hi + lo (normalized), if
-// the bound decides it: the value is then closer to hi than half the
-// smaller of the two gaps around hi.
-bool decided(const Pair& value, double error, double& rounded) {
-  if (value.lo == 0 && error == 0) {
-    rounded = value.hi;
-    return true;
-  }
-  const double size = std::fabs(value.hi);
-  if (size == 0 || !std::isfinite(size)) return false;
-  // The double below size (one less in the bit pattern of a positive
-  // double): the gap is the smaller one at a power of two.
-  std::uint64_t bits;
-  std::memcpy(&bits, &size, sizeof bits);
-  --bits;
-  double below;
-  std::memcpy(&below, &bits, sizeof below);
-  const double gap = size - below;
-  if ((std::fabs(value.lo) + error) * (1 + 0x1p-50) < gap / 2) {
-    rounded = value.hi;
-    return true;
-  }
-  return false;
-}
-
-constexpr double kErrorPerMagnitude = 0x1p-100;
-
+using double_double::add;
+using double_double::decided;
+using double_double::kErrorPerMagnitude;
+using double_double::scaled;
+using double_double::split;
 }  // namespace
 
 std::optional<SteadyCycle> SteadyCycle::compute(const Model& model) {

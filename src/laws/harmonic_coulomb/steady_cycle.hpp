@@ -26,6 +26,7 @@
 #include "frictionref/model.hpp"
 #include "frictionref/multiprecision.hpp"
 #include "frictionref/types.hpp"
+#include "numeric/double_double_scalar.hpp"
 
 namespace frictionref::detail {
 
@@ -50,10 +51,7 @@ class SteadyCycle {
     bool breakaway = false;   // a stick that ends in a slip
   };
 
-  // A double-double value hi + lo, |lo| <= ulp(hi) / 2.
-  struct Pair {
-    double hi = 0, lo = 0;
-  };
+  using Pair = DoubleDouble;  // hi + lo, |lo| <= ulp(hi) / 2
 
   // The end of a phase in a later cycle, rounded to double.
   struct End {
