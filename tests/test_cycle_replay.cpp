@@ -17,6 +17,7 @@
 #include "engine/event_loop.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/multiprecision.hpp"
+#include "laws/harmonic_coulomb/converging_cycle.hpp"
 #include "laws/harmonic_coulomb/family.hpp"
 #include "random_models.hpp"
 
@@ -47,8 +48,11 @@ std::vector<HighPhase> exact_from_base(const Model& model, const Loop& loop, dou
   const auto& replay = loop.family().cycle_replay();
   BasicModel<HighPrecision> start = model_cast<HighPrecision>(model);
   const HighPrecision pi = boost::math::constants::pi<HighPrecision>();
-  start.t0 = (asin(start.friction / start.amplitude) + HighPrecision(replay.base_turns()) * pi) /
-             start.omega;
+  if (replay.sliding())  // the reversal at the work type's base_tau()
+    start.t0 = HighPrecision(replay.base_tau()) / start.omega;
+  else
+    start.t0 = (asin(start.friction / start.amplitude) + HighPrecision(replay.base_turns()) * pi) /
+               start.omega;
   start.x0 = HighPrecision(replay.base_x());
   start.v0 = 0;
   BasicExactEngine<HighPrecision> engine(start, HighPrecision(t_end));
@@ -83,6 +87,7 @@ std::size_t base_stick(const std::vector<Phase>& phases, const HighPhase& first_
 
 struct Counts {
   std::uint64_t models = 0, replaying_models = 0, phases = 0, replayed_phases = 0;
+  std::uint64_t sliding_models = 0;  // replaying continuous sliding
   std::uint64_t differing = 0;  // values, each the correctly rounded one
   std::uint64_t differing_t = 0, differing_x = 0, differing_v = 0;
   std::uint64_t in_50_digits = 0;
@@ -111,6 +116,7 @@ void compare(const testing::RandomModel& r, bool all_values, Counts& counts) {
   counts.replayed_phases += replayed;
   counts.in_50_digits += loop.summary().replay_values_in_50_digits;
   if (replay.replayed()) ++counts.replaying_models;
+  if (replay.sliding()) ++counts.sliding_models;
   for (std::size_t i = 0; i < b.size(); ++i) {
     ASSERT_EQ(a[i].kind, b[i].kind) << "phase " << i;
     if (i > 0) {
@@ -137,8 +143,12 @@ void compare(const testing::RandomModel& r, bool all_values, Counts& counts) {
 
   const std::vector<HighPhase> exact = exact_from_base(model, loop, r.t_end);
   ASSERT_FALSE(exact.empty());
-  const std::size_t k = base_stick(b, exact.front());
-  const std::size_t first_replayed = k + 1 + replay.cycle_length();
+  // The exact run starts after phase k: the stick that ends at the base
+  // breakaway (its cycle 0 is then observed, not replayed), or the slip that
+  // ends at the base reversal (then replayed from there).
+  const std::size_t k =
+      replay.sliding() ? b.size() - replayed - 1 : base_stick(b, exact.front());
+  const std::size_t first_replayed = k + 1 + (replay.sliding() ? 0 : replay.cycle_length());
   const std::size_t end_replayed = first_replayed + replayed;
   ASSERT_EQ(end_replayed, b.size()) << "the replay goes on to the horizon";
   ASSERT_EQ(exact.size(), b.size() - (k + 1)) << "base stick " << k;
@@ -192,7 +202,8 @@ testing::RandomModel longer(testing::RandomModel r, std::mt19937_64& random) {
 }
 
 void print(const Counts& c) {
-  std::cout << c.models << " models (" << c.replaying_models << " replaying), " << c.phases
+  std::cout << c.models << " models (" << c.replaying_models << " replaying, "
+            << c.sliding_models << " of them sliding continuously), " << c.phases
             << " phases, " << c.replayed_phases << " replayed (" << c.in_50_digits
             << " of their t and x rounded in 50 digits, the rest in double-double); " << c.differing
             << " values (t " << c.differing_t << ", x " << c.differing_x << ", v " << c.differing_v
@@ -278,16 +289,194 @@ TEST(CycleReplay, PhaseLimitInsideTheReplay) {
   EXPECT_EQ(replaying.summary().final_state.x, b.back().x_end);
 }
 
-// Continuous sliding never sticks, so nothing is replayed: the motion only
-// tends to its steady state (lambda = 0.3), and so do runs that start with a
-// long slide and never come to rest.
-TEST(CycleReplay, NothingToReplayWithoutSticks) {
+// Models of the tests' random stream that slide continuously (0 <= lambda <
+// lambda*, and lambda* (1 +- 10^-u), the stream's own masses, frequencies,
+// starts and offsets), over
+// 100 to 200 forcing periods: long enough for the reversals to come within
+// 2^-44 rad of their fixed point and replay (docs/theory.md 3.10), unless
+// lambda is so small that they converge too slowly, or the start's |w t0| so
+// large that the work type's reversal times never get that close.
+bool may_slide(const testing::RandomModel& r) {
+  return r.family == testing::LambdaFamily::continuous ||
+         r.family == testing::LambdaFamily::near_star;  // half of them below lambda*
+}
+
+testing::RandomModel sliding(testing::RandomModel r, std::mt19937_64& random) {
+  r.periods = 100 + 100 * static_cast<double>(random() >> 11) * 0x1.0p-53;
+  r.t_end = r.model.t0 + r.periods * 2 * testing::kPiDouble / r.model.omega;
+  return r;
+}
+
+// Continuous sliding, replayed from a reversal near the fixed point on and
+// event by event: the same phases, and every value where the two differ is
+// the correctly rounded exact one (the 50-digit engine from the base
+// reversal). Four shards of 1,000 consecutive models of one stream.
+class SlidingReplayShard : public ::testing::TestWithParam<int> {};
+
+TEST_P(SlidingReplayShard, SameEventsAsEventByEventOnRandomModels) {
+  constexpr int kShardSize = 1000;
+  testing::ModelStream stream(1111);
+  std::mt19937_64 random(1112);
+  int seen = 0;
+  Counts counts;
+  while (counts.models < kShardSize && !HasFatalFailure()) {
+    const testing::RandomModel r = stream.next();
+    if (!may_slide(r)) continue;
+    const testing::RandomModel s = sliding(r, random);
+    if (seen++ / kShardSize != GetParam()) continue;
+    compare(s, false, counts);
+  }
+  print(counts);
+  EXPECT_GT(counts.sliding_models, kShardSize / 4);
+  EXPECT_GT(counts.differing, 0u);
+  RecordProperty("differing", std::to_string(counts.differing));
+}
+
+INSTANTIATE_TEST_SUITE_P(CycleReplay, SlidingReplayShard, ::testing::Values(0, 1, 2, 3));
+
+// Every value of every replayed phase of 40 models that slide continuously.
+TEST(CycleReplay, EverySlidingValueIsCorrectlyRounded) {
+  testing::ModelStream stream(1113);
+  std::mt19937_64 random(1114);
+  Counts counts;
+  for (int i = 0; i < 100000 && counts.sliding_models < 40 && !HasFatalFailure(); ++i) {
+    const testing::RandomModel r = stream.next();
+    if (may_slide(r)) compare(sliding(r, random), true, counts);
+  }
+  print(counts);
+  EXPECT_EQ(counts.sliding_models, 40u);
+}
+
+// The continuous replay's three ways to a value give the same doubles: the
+// double-double sums where their bound decides (what the other tests
+// check against the 50-digit engine), the 50-digit linear transient with
+// its bound, and the reversal map iterated in 50 digits from the base. Every
+// end of 300 reversals of 30 replaying models of the random stream, and the
+// state at a horizon inside each of the first 40 slips and at their ends.
+TEST(CycleReplay, SlidingFallbacksGiveTheSameValues) {
+  testing::ModelStream stream(1115);
+  std::mt19937_64 random(1116);
+  int models = 0;
+  std::uint64_t values = 0;
+  for (int i = 0; i < 100000 && models < 30 && !HasFatalFailure(); ++i) {
+    const testing::RandomModel r = stream.next();
+    if (!may_slide(r)) continue;
+    const testing::RandomModel s = sliding(r, random);
+    std::optional<Loop> loop;
+    try {
+      loop.emplace(s.model, s.t_end, replay_after(1));
+    } catch (const InvalidInput&) {
+      continue;
+    }
+    const std::vector<Phase> phases = phases_of(*loop);
+    const auto& replay = loop->family().cycle_replay();
+    if (!replay.sliding()) continue;
+    ++models;
+    SCOPED_TRACE(testing::describe(s));
+    const PhaseKind first = phases[phases.size() - loop->summary().replayed_phases].kind;
+    const int direction = first == PhaseKind::slip_forward ? 1 : -1;
+    std::vector<detail::ConvergingCycle> ways;
+    for (int level = 0; level < 3; ++level) {
+      std::optional<detail::ConvergingCycle> cycle = detail::ConvergingCycle::compute(s.model);
+      ASSERT_TRUE(cycle);
+      ASSERT_TRUE(cycle->start(replay.base_tau(), replay.base_x(), direction));
+      cycle->force_fallback(level);
+      ways.push_back(*cycle);
+    }
+    double t_before = phases[phases.size() - loop->summary().replayed_phases].t_begin;
+    for (int k = 0; k < 300; ++k) {
+      const detail::ConvergingCycle::End fast = ways[0].next_end();
+      for (int level = 1; level < 3; ++level) {
+        const detail::ConvergingCycle::End other = ways[level].next_end();
+        ASSERT_EQ(fast.kind, other.kind) << "reversal " << k + 1 << ", level " << level;
+        ASSERT_EQ(fast.t, other.t) << "reversal " << k + 1 << ", level " << level;
+        ASSERT_EQ(fast.x, other.x) << "reversal " << k + 1 << ", level " << level;
+        ASSERT_EQ(fast.acceleration, other.acceleration) << "reversal " << k + 1 << ", level " << level;
+        values += 3;
+      }
+      if (k < 40) {
+        // Inside the slip, and at its end (stopped there).
+        for (const double t_end : {t_before + 0.37 * (fast.t - t_before), fast.t}) {
+          const detail::ConvergingCycle::Horizon h0 = ways[0].horizon(t_end);
+          for (int level = 1; level < 3; ++level) {
+            const detail::ConvergingCycle::Horizon h = ways[level].horizon(t_end);
+            ASSERT_EQ(h0.x, h.x) << "slip " << k << ", level " << level << ", t_end " << t_end;
+            ASSERT_EQ(h0.v, h.v) << "slip " << k << ", level " << level << ", t_end " << t_end;
+            ASSERT_EQ(h0.acceleration, h.acceleration) << "slip " << k << ", level " << level;
+            values += 3;
+          }
+        }
+      }
+      t_before = fast.t;
+      for (auto& way : ways) way.advance();
+    }
+  }
+  std::cout << models << " models, " << values << " values compared\n";
+  EXPECT_EQ(models, 30);
+}
+
+// The seed's continuous sliding (lambda = 0.3) over 10^4 periods, by
+// default: everything after the reversals come within 2^-44 rad of their
+// fixed point (some 45 of them) is replayed, to the horizon, with no value
+// needing 50 digits; the last reversal is the exact fixed point's to within
+// rounding (theory.md 5.4: tau1 = acos(0.3 pi / 2) + n pi).
+TEST(CycleReplay, ContinuousSlidingReplaysLongRuns) {
   Model model;
   model.friction = 0.3;
-  ExactEngine engine(model, 1e4 * 2 * M_PI, replay_after(1));
-  phases_of(engine);
-  EXPECT_EQ(engine.summary().replayed_phases, 0u);
-  EXPECT_GT(engine.summary().stops, 19000u);
+  ExactEngine short_run(model, 100 * 2 * M_PI);
+  phases_of(short_run);
+  EXPECT_EQ(short_run.summary().replayed_phases, 0u);
+  ExactEngine engine(model, 1e4 * 2 * M_PI);
+  const std::vector<Phase> phases = phases_of(engine);
+  const Summary& s = engine.summary();
+  EXPECT_GE(s.replayed_phases, s.phases - 100);
+  EXPECT_EQ(s.replay_values_in_50_digits, 0u);
+  EXPECT_EQ(s.reversals, s.stops);
+  EXPECT_GT(s.stops, 19990u);
+  const Phase& last_reversal = phases[phases.size() - 2];
+  const double tau1 = std::acos(0.3 * M_PI / 2);
+  const double n = std::round((last_reversal.t_end - tau1) / M_PI);
+  EXPECT_NEAR(last_reversal.t_end, tau1 + n * M_PI, 1e-11);
+}
+
+// No replay where the reversal map does not contract enough (lambda = 0:
+// kappa = -1), where the force at the reversal barely beats friction (just
+// below lambda*), or where the work type's reversal times stay farther
+// than 2^-44 rad from the fixed point (|w t| near 1e9).
+TEST(CycleReplay, ContinuousSlidingReplayGuards) {
+  const auto replayed = [](double friction, double t0) {
+    Model model;
+    model.friction = friction;
+    model.t0 = t0;
+    ExactEngine engine(model, t0 + 3000 * 2 * M_PI, replay_after(1));
+    phases_of(engine);
+    return engine.summary().replayed_phases;
+  };
+  EXPECT_GT(replayed(0.3, 0), 5000u);
+  EXPECT_EQ(replayed(0, 0), 0u);
+  EXPECT_EQ(replayed(testing::kLambdaStar * (1 - 1e-9), 0), 0u);
+  EXPECT_EQ(replayed(0.3, 1e9), 0u);
+}
+
+// A phase limit inside the continuous replay ends the run as event by event.
+TEST(CycleReplay, PhaseLimitInsideTheSlidingReplay) {
+  Model model;
+  model.friction = 0.4;
+  model.x0 = -3;
+  SolveOptions options = replay_after(1);
+  options.max_phases = 1001;
+  ExactEngine replaying(model, 1e3 * 2 * M_PI, options);
+  const std::vector<Phase> b = phases_of(replaying);
+  options.replay_min_cycles = 0;
+  ExactEngine event_by_event(model, 1e3 * 2 * M_PI, options);
+  const std::vector<Phase> a = phases_of(event_by_event);
+  ASSERT_EQ(a.size(), 1001u);
+  ASSERT_EQ(b.size(), 1001u);
+  EXPECT_GT(replaying.summary().replayed_phases, 900u);
+  EXPECT_EQ(replaying.summary().termination, Termination::phase_limit);
+  EXPECT_EQ(a.back().kind, b.back().kind);
+  EXPECT_NEAR(a.back().t_end, b.back().t_end, 1e-12 * a.back().t_end);
+  EXPECT_NEAR(a.back().x_end, b.back().x_end, 1e-12);
 }
 
 }  // namespace

@@ -40,8 +40,13 @@ struct SolveOptions {
   // next has been computed and at least this many cycles remain before
   // t_end, the engine computes the cycle once in 50 digits and emits every
   // later phase from it, to the horizon, each number correctly rounded,
-  // instead of event by event. 0 turns this off. The default keeps the
-  // 50-digit cycle (about 0.25 ms) below a tenth of the time it saves.
+  // instead of event by event. Sliding continuously, its reversals converge
+  // to a fixed point (docs/theory.md 3.10): once one lies within 2^-44 rad of
+  // it and at least this many forcing periods remain, every later phase is
+  // emitted from the fixed cycle and its linear transient, with certified
+  // bounds, each number correctly rounded. 0 turns both off. The default
+  // keeps the 50-digit work (about 0.25 ms) below a tenth of the time it
+  // saves.
   std::uint64_t replay_min_cycles = 1024;
 
   // Throws InvalidInput naming the field and the rule.
@@ -65,9 +70,9 @@ struct BasicSummary {
   std::uint64_t root_function_calls = 0;  // velocity evaluations inside root finding
   std::uint64_t predicted_stops = 0;      // stops found by Halley steps from a prediction
                                           // (the rest by GSL Brent + polish)
-  // Phases emitted from the 50-digit steady cycle (SolveOptions::replay_min_cycles),
-  // and of their end times and positions those that the double-double error
-  // bound could not round (then rounded from 50 digits).
+  // Phases emitted from the replayed steady motion (SolveOptions::
+  // replay_min_cycles), and of their end times and positions those that the
+  // double-double error bound could not round (then rounded from 50 digits).
   std::uint64_t replayed_phases = 0;
   std::uint64_t replay_values_in_50_digits = 0;
 

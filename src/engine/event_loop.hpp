@@ -16,11 +16,11 @@
 //       the first stop of the slip (v = 0) before tau_end, or the state at
 //       tau_end; throws RootFailure if a root solver failed.
 //
-// A family may also replay a cycle that repeats exactly (the seed's, with
-// dead bands: laws/harmonic_coulomb/cycle_replay.hpp), through
+// A family may also replay its steady motion (the seed's, with dead bands or
+// sliding continuously: laws/harmonic_coulomb/cycle_replay.hpp), through
 //   CycleReplay& cycle_replay()
-//       with start(min_cycles) at each breakaway (true: replay from here),
-//       then next(ReplayedPhase&) for every phase to the horizon.
+//       with start(min_cycles) at each breakaway and reversal (true: replay
+//       from here), then next(ReplayedPhase&) for every phase to the horizon.
 //
 // Time is the forcing phase tau = w t (w = model.omega) in the work type;
 // phases are emitted in user time.
@@ -314,12 +314,19 @@ bool EventLoop<Real, Family>::next(BasicPhase<Real>& phase) {
       done_ = true;
     } else {
       ++summary_.stops;
-      if (end.next_direction == -sign_) ++summary_.reversals;
+      const bool reverses = end.next_direction == -sign_;
+      if (reverses) ++summary_.reversals;
       mode_ = end.next_direction != 0 ? Mode::slip : Mode::stick;
       sign_ = end.next_direction;
       tau_ = end.tau;
       x_ = end.x;
       v_ = 0;
+      if constexpr (replays_cycles<Family>::value) {
+        if (reverses) {
+          replaying_ = family_.cycle_replay().start(options_.replay_min_cycles);
+          replayed_x_ = Real(x_);
+        }
+      }
     }
     if (emitted) return true;
   }

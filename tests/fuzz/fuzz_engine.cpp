@@ -42,8 +42,9 @@
 //               bits 1-2 t_end field: 0 absolute t_end, 1 span (t_end = t0 + span),
 //               2-3 forcing periods (t_end = t0 + n 2 pi / w);
 //               bit 3 v0 is in units of B / (m w); bit 4 max_phases follows (uint16);
-//               bit 7 replay the seed's steady cycle from the first one on
-//               (SolveOptions::replay_min_cycles = 1, docs/theory.md 3.9)
+//               bit 7 replay the seed's steady motion from the first cycle
+//               or reversal that allows it on (SolveOptions::
+//               replay_min_cycles = 1, docs/theory.md 3.9, 3.10)
 //   fields      mass, amplitude, omega, friction|lambda, x0, v0, t0, t_end|span|periods
 //   [2 bytes]   max_phases (little endian), if flag bit 4
 //   the general model, if flag bit 5 (docs/theory.md 7):

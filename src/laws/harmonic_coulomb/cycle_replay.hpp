@@ -1,12 +1,16 @@
-// Replaying the seed's steady cycle (docs/theory.md 3.9, steady_cycle.hpp).
+// Replaying the seed's steady motion (docs/theory.md 3.9, 3.10).
 //
-// The family reports every stop and breakaway here. At a breakaway the event
-// loop asks whether to replay: yes when the cycle it has just finished (from
-// the breakaway before) has the phases of the 50-digit cycle, every phase of
-// that cycle is far longer than the time resolution at t_end, and enough
-// whole cycles remain. The replay then hands the loop every following phase
-// to the horizon, the last one included (its state at t_end from the
-// 50-digit law).
+// The family reports every stop, reversal and breakaway here, and the event
+// loop asks at each breakaway and reversal whether to replay from it:
+// - with dead bands (steady_cycle.hpp), at a breakaway, when the cycle just
+//   finished (from the breakaway before) has the phases of the 50-digit
+//   cycle, every phase of that cycle is far longer than the time resolution
+//   at t_end, and enough whole cycles remain;
+// - sliding continuously (converging_cycle.hpp), at a reversal within
+//   2^-44 rad of the fixed point of the reversal map, when enough whole
+//   periods remain.
+// The replay then hands the loop every following phase to the horizon, the
+// last one included (its state at t_end from the 50-digit law).
 #pragma once
 
 #include <array>
@@ -20,6 +24,7 @@
 #include "engine/event_loop.hpp"
 #include "engine/scalar_traits.hpp"
 #include "frictionref/model.hpp"
+#include "laws/harmonic_coulomb/converging_cycle.hpp"
 #include "laws/harmonic_coulomb/force_crossings.hpp"
 #include "laws/harmonic_coulomb/steady_cycle.hpp"
 
@@ -36,9 +41,18 @@ class CycleReplay {
               const Work& tau_end)
       : model_(&model), crosses_(crosses), alpha_(alpha), t_end_(t_end), tau_end_(tau_end) {}
 
-  // A slip of this kind stopped at tau with x; `clean`: no touch and no
-  // merged stick on the way (either makes the cycle fragile to rounding).
-  void observe_stop(PhaseKind kind, const Work& tau, const Work& x, bool clean) {
+  // A slip of this kind stopped at tau with x, then `next_direction` (0: a
+  // stick); `clean`: no touch and no merged stick on the way (either makes
+  // the cycle fragile to rounding).
+  void observe_stop(PhaseKind kind, const Work& tau, const Work& x, bool clean,
+                    int next_direction) {
+    at_reversal_ = clean && next_direction != 0 &&
+                   next_direction != (kind == PhaseKind::slip_forward ? 1 : -1);
+    if (at_reversal_) {
+      reversal_tau_ = tau;
+      reversal_x_ = x;
+      reversal_direction_ = next_direction;
+    }
     if (!watching() || !open_) return;
     clean_ = clean_ && clean;
     append(kind, tau, x);
@@ -47,6 +61,7 @@ class CycleReplay {
   // A stick at x ended in a breakaway at tau in `direction`: closes the cycle
   // since the breakaway before and opens the next one.
   void observe_breakaway(const Work& tau, const Work& x, int direction) {
+    at_reversal_ = false;
     if (!watching()) return;
     if (open_) append(PhaseKind::stick, tau, x);
     closed_ = open_ && clean_ && count_[current_] <= kMaxPhases;
@@ -62,8 +77,9 @@ class CycleReplay {
     direction_ = direction;
   }
 
-  // At the breakaway just observed: true to replay from it.
+  // At the breakaway or reversal just observed: true to replay from it.
   bool start(std::uint64_t min_cycles) {
+    if (at_reversal_) return start_sliding(min_cycles);
     if constexpr (!std::is_same_v<Real, double>) {
       (void)min_cycles;
       return false;  // no wider type to compute the cycle in
@@ -97,19 +113,24 @@ class CycleReplay {
     }
   }
 
-  // Whether a replay started, and from where: its cycle 0 (observed, not
-  // replayed) starts at the breakaway alpha + base_turns() pi with x =
-  // base_x(), v = 0; every replayed value is the correctly rounded one of the
-  // exact motion from there (for tests).
+  // Whether a replay started, and from where (for tests); every replayed
+  // value is the correctly rounded one of the exact motion from there.
+  // With dead bands its cycle 0 (observed, not replayed) starts at the
+  // breakaway alpha + base_turns() pi with x = base_x(), v = 0; sliding
+  // continuously (sliding()) the replay starts at the reversal at forcing
+  // phase base_tau() with x = base_x(), v = 0.
   bool replayed() const { return replayed_; }
+  bool sliding() const { return sliding_; }
   std::int64_t base_turns() const { return n0_; }
   const Work& base_x() const { return x0_; }
+  const Work& base_tau() const { return base_tau_; }
   std::size_t cycle_length() const { return cycle_ ? cycle_->size() : 0; }
 
   // The next replayed phase, up to the one at the horizon (at_horizon), the
   // last one.
   void next(ReplayedPhase<Real>& out) {
     if constexpr (std::is_same_v<Real, double>) {
+      if (sliding_) return next_sliding(out);
       if (phase_index_ == 0) shift_ = cycle_->shift(n0_, x0_, cycle_index_);
       const SteadyCycle::Phase& phase = cycle_->phase(phase_index_);
       const SteadyCycle::End end = cycle_->end(shift_, phase_index_);
@@ -156,6 +177,74 @@ class CycleReplay {
     std::size_t& count = count_[current_];
     if (count < kMaxPhases) seen_[current_][count] = {kind, tau, x};
     ++count;
+  }
+
+  // At a reversal: replay the continuous sliding from here if it is near
+  // enough its fixed point (a cheap test in the work type first).
+  bool start_sliding(std::uint64_t min_cycles) {
+    if constexpr (!std::is_same_v<Real, double>) {
+      (void)min_cycles;
+      return false;
+    } else {
+      if (min_cycles == 0 || sliding_disabled_) return false;
+      using std::fabs;
+      const Work pi = boost::math::constants::pi<Work>();
+      if (!(fabs(tau_end_ - reversal_tau_) >= 2 * pi * Work(min_cycles))) return disable_sliding();
+      if (!fixed_known_) {
+        const Work omega = Work(model_->omega);
+        fixed_phase_ = ConvergingCycle::fixed_phase(
+            Work(model_->amplitude) / (Work(model_->mass) * omega),
+            Work(model_->friction) / (Work(model_->mass) * omega));
+        fixed_known_ = true;
+        if (!model_->is_harmonic_coulomb() || std::isnan(fixed_phase_)) return disable_sliding();
+      }
+      const Work turns = std::nearbyint((reversal_tau_ - fixed_phase_) / pi);
+      const Work deviation = reversal_tau_ - turns * pi - fixed_phase_;
+      if (!(fabs(deviation) <= Work(2 * ConvergingCycle::kMaxDeviation))) return false;
+      // Every phase (about half a period) stays far above the time
+      // resolution to the horizon.
+      if (!(1 > 64 * ScalarTraits<Real>::time_resolution(tau_end_))) return disable_sliding();
+      if (!converging_) {
+        converging_ = ConvergingCycle::compute(*model_);
+        if (!converging_) return disable_sliding();
+      }
+      if (!converging_->start(reversal_tau_, reversal_x_, reversal_direction_)) return false;
+      base_tau_ = reversal_tau_;
+      x0_ = reversal_x_;
+      n0_ = converging_->base_turns();
+      replayed_ = sliding_ = true;
+      return true;
+    }
+  }
+
+  bool disable_sliding() {
+    sliding_disabled_ = true;
+    return false;
+  }
+
+  void next_sliding(ReplayedPhase<Real>& out) {
+    const ConvergingCycle::End end = converging_->next_end();
+    out.kind = end.kind;
+    if (!(end.t < t_end_)) {
+      const ConvergingCycle::Horizon at = converging_->horizon(t_end_);
+      out.t_end = t_end_;
+      out.x_end = at.x;
+      out.v_end = at.v;
+      out.acceleration = at.acceleration;
+      out.stop = out.reversal = out.breakaway = false;
+      out.at_horizon = true;
+      out.rounded_in_50_digits = 0;
+      return;
+    }
+    out.rounded_in_50_digits = end.rounded_in_50_digits;
+    out.t_end = end.t;
+    out.x_end = end.x;
+    out.v_end = 0;
+    out.acceleration = end.acceleration;
+    out.stop = out.reversal = true;
+    out.breakaway = false;
+    out.at_horizon = false;
+    converging_->advance();
   }
 
   // Whether a replay may still start: not in the 50-digit engine itself,
@@ -216,6 +305,17 @@ class CycleReplay {
   std::int64_t cycle_index_ = 0;  // replays cycles 1, 2, ... to the horizon
   std::size_t phase_index_ = 0;
   SteadyCycle::Shift shift_;  // of cycle_index_
+
+  // Continuous sliding: the reversal just observed, and its replay.
+  bool at_reversal_ = false;
+  Work reversal_tau_ = 0, reversal_x_ = 0;
+  int reversal_direction_ = 0;
+  bool fixed_known_ = false;
+  Work fixed_phase_ = 0;  // u*, NaN without continuous sliding
+  bool sliding_disabled_ = false;
+  bool sliding_ = false;
+  Work base_tau_ = 0;
+  std::optional<ConvergingCycle> converging_;
 };
 
 }  // namespace frictionref::detail

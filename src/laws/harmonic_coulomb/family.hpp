@@ -43,8 +43,8 @@ class HarmonicCoulombFamily {
   int direction_at_rest(const Work& tau, const Work& x);
   Breakaway<Work> stick_end(const Work& tau, const Work& x);
   SlipEnd<Work> slip_end(const PhaseStart<Work>& start);
-  // The steady cycle's replay (event_loop.hpp, cycle_replay.hpp); it sees
-  // every stop and breakaway.
+  // The steady motion's replay (event_loop.hpp, cycle_replay.hpp); it sees
+  // every stop, reversal and breakaway.
   CycleReplay<Real>& cycle_replay() { return replay_; }
   const CycleReplay<Real>& cycle_replay() const { return replay_; }
 
@@ -223,7 +223,7 @@ SlipEnd<typename HarmonicCoulombFamily<Real>::Work> HarmonicCoulombFamily<Real>:
   result.next_direction = next;
   if (result.stops)
     replay_.observe_stop(kind, result.tau, result.x,
-                         summary_->touches + summary_->merged_sticks == fragile);
+                         summary_->touches + summary_->merged_sticks == fragile, next);
   if (result.stops && next != 0) {
     // The next slip starts here: carry sin, cos of the stop, recomputed
     // fresh now and then so rounding cannot build up.

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Seed inputs of the general model for fuzz_engine (tests/fuzz/corpus/engine/general-*,
 record-*: with a ground record), and of the seed's model with its steady cycle replayed
-(replay-*: flag bit 7).
+(replay-*: flag bit 7; with dead bands and sliding continuously).
 
 Each seed is a model of the general family written in fuzz_engine's input
 layout (see the comment at the top of tests/fuzz/fuzz_engine.cpp) with every
@@ -85,6 +85,10 @@ REPLAY_SEEDS = {
     "replay-moving-start": (one, one, (3, 0), (8, -1), (3, -1), (-1, 0), (2, -1), (30, 0)),
     "replay-near-one": (one, one, one, (999, -3), (5, 0), zero, zero, (40, 0)),
     "replay-far-phase": (one, one, one, (6, -1), zero, zero, (1, 8), (25, 0)),
+    # continuous sliding, replayed from a reversal near the fixed point (theory.md 3.10)
+    "replay-sliding": (one, one, one, (3, -1), zero, zero, zero, (60, 0)),
+    "replay-sliding-offset": ((2, 0), one, (3, 0), (45, -2), (1, 6), (5, -1), (7, -1), (50, 0)),
+    "replay-sliding-slow": (one, one, one, (1, -1), zero, zero, zero, (190, 0)),
 }
 
 
