@@ -347,6 +347,27 @@ TEST(CycleReplay, EverySlidingValueIsCorrectlyRounded) {
   EXPECT_EQ(counts.sliding_models, 40u);
 }
 
+// Every value of three long continuous runs, replayed long past the point
+// where kappa^k is dropped (below 2^-400: some 1,000 reversals at lambda =
+// 0.3, 3,000 at 0.1) and x and |a| are decided once per parity, against
+// the 50-digit engine from the base reversal.
+TEST(CycleReplay, EveryValueOfLongSlidingRuns) {
+  Counts counts;
+  for (const double lambda : {0.3, 0.1, 0.5}) {
+    testing::RandomModel r;
+    r.model.friction = lambda;
+    r.model.mass = 1.5;
+    r.model.omega = 2.5;
+    r.model.x0 = -0.75;
+    r.periods = 2000;
+    r.t_end = r.periods * 2 * testing::kPiDouble / r.model.omega;
+    compare(r, true, counts);
+  }
+  print(counts);
+  EXPECT_EQ(counts.sliding_models, 3u);
+  EXPECT_GT(counts.replayed_phases, 11000u);
+}
+
 // The continuous replay's three ways to a value give the same doubles: the
 // double-double sums where their bound decides (what the other tests
 // check against the 50-digit engine), the 50-digit linear transient with

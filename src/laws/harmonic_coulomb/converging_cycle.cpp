@@ -84,10 +84,10 @@ std::optional<ConvergingCycle> ConvergingCycle::compute(const Model& model) {
   if (!(l <= HighPrecision(0.996))) return std::nullopt;
   const HighPrecision m_lip = (1 + l) * (s - r + b * rho) + cycle.pi_ * b;
   cycle.phi1_ = cycle.pi_ * (r - s);
-  cycle.l_ = up(l);
-  cycle.k_lip_ = up(k_lip);
-  cycle.m_lip_ = up(m_lip);
-  cycle.kappa_abs_ = up(kappa_abs);
+  cycle.l_ = l;
+  cycle.k_lip_ = k_lip;
+  cycle.m_lip_ = m_lip;
+  cycle.l_up_ = up(l);
   cycle.kappa_d_ = static_cast<double>(cycle.kappa_);
   cycle.half_period_ = split(cycle.pi_ / cycle.omega_);
   cycle.fixed_time_ = split(cycle.u_star_ / cycle.omega_);
@@ -96,7 +96,6 @@ std::optional<ConvergingCycle> ConvergingCycle::compute(const Model& model) {
   cycle.inverse_omega_up_ = up(1 / cycle.omega_);
   cycle.omega_b_up_ = up(cycle.omega_ * b);
   cycle.cos_star_up_ = up(cycle.cos_star_);
-  cycle.phi1_up_ = up(abs(cycle.phi1_));
   return cycle;
 }
 
@@ -120,7 +119,16 @@ bool ConvergingCycle::start(const long double& tau, const long double& x, int di
   time_transient_ = static_cast<double>(e / omega_);
   slide_transient_ = static_cast<double>(phi1_ * e / ((1 + kappa_) * omega_));
   acceleration_transient_ = static_cast<double>(omega_ * b_ * cos_star_ * e);
+  // The rests (theory.md 3.10): |rho_k| <= (K e0^2 / (2 (1 - L))) L^(k-1),
+  // their sum <= K e0^2 / (2 (1 - L)^2), and sum_j (L^j e0)^2 <= e0^2 / (1 - L^2).
+  const HighPrecision e2 = e * e;
+  rest_per_lk_ = up(k_lip_ * e2 / (2 * (1 - l_) * l_));
+  x_rest_ = up((abs(phi1_) * k_lip_ * e2 / (2 * (1 - l_) * (1 - l_)) +
+                m_lip_ / 2 * e2 / ((1 - l_) * (1 + l_))) /
+               omega_);
   current_ = Cursor{};
+  next_ = step(current_);
+  steady_x_known_[0] = steady_x_known_[1] = steady_a_known_ = false;
   exact_k_ = 0;
   exact_u_ = u;
   exact_x_ = HighPrecision(x);
@@ -128,20 +136,16 @@ bool ConvergingCycle::start(const long double& tau, const long double& x, int di
 }
 
 ConvergingCycle::Cursor ConvergingCycle::step(const Cursor& c) const {
-  // e_{k+1} - kappa e_k is at most K e_k^2 / 2 (theory.md 3.10), |e_k| <= L^k |e0|.
   // Subnormal numbers would cost a hundred cycles an operation: kappa^k is
-  // dropped (0) below 2^-400, and L^k kept at 2^-400 from there (still an
+  // dropped (0) below 2^-400, and L^k held at 2^-400 from there (still an
   // upper bound of L^k, and of |kappa|^k, which then enters the bounds).
   Cursor n;
   n.k = c.k + 1;
   n.p = c.p * kappa_d_;
   if (std::fabs(n.p) < kFloor) n.p = 0;
-  const double e = c.lk * e0_abs_ * (1 + 0x1p-50);
-  const double e2 = e * e * (1 + 0x1p-50) + kTiny;
-  n.r = (kappa_abs_ * c.r + 0.5 * k_lip_ * e2) * (1 + 0x1p-48) + kTiny;
-  n.lk = std::fmax(c.lk * l_ * (1 + 0x1p-50), kFloor);
-  n.sum_r = (c.sum_r + c.r) * (1 + 0x1p-50) + kTiny;
-  n.sum_e2 = (c.sum_e2 + e2) * (1 + 0x1p-50) + kTiny;
+  const double lk = c.lk * l_up_ * (1 + 0x1p-50);
+  n.lk = lk > kFloor ? lk : kFloor;
+  n.r = rest_per_lk_ * n.lk * (1 + 0x1p-50);
   return n;
 }
 
@@ -176,8 +180,7 @@ ConvergingCycle::Linear ConvergingCycle::linear(const Cursor& c) const {
       fixed + phi1_ * e0_ * (1 - pow(-kappa_, HighPrecision(c.k))) / (1 + kappa_);
   const HighPrecision moved = slides / omega_;
   v.x = HighPrecision(x0_) + (even(n0_) ? moved : HighPrecision(-moved));
-  v.x_error = (HighPrecision(phi1_up_) * c.sum_r + HighPrecision(m_lip_) / 2 * c.sum_e2) / omega_ +
-              kHighSlack * (abs(HighPrecision(x0_)) + abs(moved));
+  v.x_error = HighPrecision(x_rest_) + kHighSlack * (abs(HighPrecision(x0_)) + abs(moved));
   const HighPrecision a = omega_ * (b_ * (sin_star_ + cos_star_ * transient) + r_);
   v.a = even(n0_ + c.k) ? a : HighPrecision(-a);
   const HighPrecision e = HighPrecision(c.lk) * e0_abs_;
@@ -222,40 +225,62 @@ ConvergingCycle::End ConvergingCycle::end_at(const Cursor& c) {
   End end{kind_of_slip(c.k - 1), 0, 0, 0, 0};
   const double k = static_cast<double>(c.k);
   const double n = static_cast<double>(n0_ + c.k);
+  const bool fast = fallback_ == 0;
   // A transient term's relative error (kappa^k), or once dropped, its size
   // relative to its coefficient.
   const double spread = c.p != 0 ? (2 * k + 8) * kUnit : 0;
   const double dropped = c.p != 0 ? 0 : c.lk;
+  // Once kappa^k is dropped, x and |a| depend on k only through the parity,
+  // and their bounds only shrink (L^k): decided once, they are kept.
+  const bool steady = c.p == 0 && fast;
+
   // t = (n0 + k) pi / w + u* / w + kappa^k e0 / w.
   const double st = c.p * time_transient_;
-  const DoubleDouble t = add(add(scaled(n, half_period_), fixed_time_), DoubleDouble{st, 0});
+  DoubleDouble t = add(scaled(n, half_period_), fixed_time_);
+  if (st != 0) t = add(t, DoubleDouble{st, 0});
   const double t_error = kErrorPerMagnitude * (fabs(n * half_period_.hi) + fixed_time_.hi + fabs(st)) +
                          fabs(st) * spread + fabs(time_transient_) * dropped +
                          c.r * inverse_omega_up_ * (1 + 0x1p-50) + kTiny;
-  // x = x0 + (-1)^n0 ([k odd] 2 b sin u* + phi1 e0 (1 - |kappa|^k) / (1 + kappa)) / w.
-  const double sign0 = even(n0_) ? 1 : -1;
-  const bool odd = c.k % 2 != 0;
-  const double q = fabs(c.p);
-  const double sx = sign0 * (slide_transient_ - slide_transient_ * q);
-  DoubleDouble x = x0_pair_;
-  if (odd) x = add(x, DoubleDouble{sign0 * slide_.hi, sign0 * slide_.lo});
-  x = add(x, DoubleDouble{sx, 0});
-  const double x_error =
-      kErrorPerMagnitude * (fabs(x0_pair_.hi) + (odd ? fabs(slide_.hi) : 0) + fabs(sx)) +
-      fabs(slide_transient_) * (q * spread + dropped + 4 * kUnit) +
-      (phi1_up_ * c.sum_r + 0.5 * m_lip_ * c.sum_e2) * inverse_omega_up_ * (1 + 0x1p-48) + kTiny;
-  // a = (-1)^(n0 + k) w (b sin u* + r + b cos u* kappa^k e0).
-  const double sa = c.p * acceleration_transient_;
-  const DoubleDouble a = add(fixed_acceleration_, DoubleDouble{sa, 0});
-  const double e = c.lk * e0_abs_ * (1 + 0x1p-50);
-  const double a_error = kErrorPerMagnitude * (fixed_acceleration_.hi + fabs(sa)) + fabs(sa) * spread +
-                         fabs(acceleration_transient_) * dropped +
-                         omega_b_up_ * (cos_star_up_ * c.r + 0.5 * e * e) * (1 + 0x1p-48) + kTiny;
-  const bool fast = fallback_ == 0;
   const bool t_done = fast && decided(t, t_error, end.t);
-  const bool x_done = fast && decided(x, x_error, end.x);
-  double acceleration = 0;
-  const bool a_done = fast && decided(a, a_error, acceleration);
+
+  // x = x0 + (-1)^n0 ([k odd] 2 b sin u* + phi1 e0 (1 - |kappa|^k) / (1 + kappa)) / w.
+  const bool odd = c.k % 2 != 0;
+  bool x_done = steady && steady_x_known_[odd];
+  if (x_done) {
+    end.x = steady_x_[odd];
+  } else {
+    const double sign0 = even(n0_) ? 1 : -1;
+    const double q = fabs(c.p);
+    const double sx = sign0 * (slide_transient_ - slide_transient_ * q);
+    DoubleDouble x = x0_pair_;
+    if (odd) x = add(x, DoubleDouble{sign0 * slide_.hi, sign0 * slide_.lo});
+    x = add(x, DoubleDouble{sx, 0});
+    const double x_error =
+        kErrorPerMagnitude * (fabs(x0_pair_.hi) + (odd ? fabs(slide_.hi) : 0) + fabs(sx)) +
+        fabs(slide_transient_) * (q * spread + dropped + 4 * kUnit) + x_rest_ + kTiny;
+    x_done = fast && decided(x, x_error, end.x);
+    if (x_done && steady) {
+      steady_x_[odd] = end.x;
+      steady_x_known_[odd] = true;
+    }
+  }
+
+  // a = (-1)^(n0 + k) w (b sin u* + r + b cos u* kappa^k e0).
+  double acceleration = steady_a_;
+  bool a_done = steady && steady_a_known_;
+  if (!a_done) {
+    const double sa = c.p * acceleration_transient_;
+    const DoubleDouble a = add(fixed_acceleration_, DoubleDouble{sa, 0});
+    const double e = c.lk * e0_abs_ * (1 + 0x1p-50);
+    const double a_error = kErrorPerMagnitude * (fixed_acceleration_.hi + fabs(sa)) +
+                           fabs(sa) * spread + fabs(acceleration_transient_) * dropped +
+                           omega_b_up_ * (cos_star_up_ * c.r + 0.5 * e * e) * (1 + 0x1p-48) + kTiny;
+    a_done = fast && decided(a, a_error, acceleration);
+    if (a_done && steady) {
+      steady_a_ = acceleration;
+      steady_a_known_ = true;
+    }
+  }
   end.acceleration = even(n0_ + c.k) ? acceleration : -acceleration;
   if (t_done && x_done && a_done) return end;
 
@@ -274,9 +299,12 @@ ConvergingCycle::End ConvergingCycle::end_at(const Cursor& c) {
   return end;
 }
 
-ConvergingCycle::End ConvergingCycle::next_end() { return end_at(step(current_)); }
+ConvergingCycle::End ConvergingCycle::next_end() { return end_at(next_); }
 
-void ConvergingCycle::advance() { current_ = step(current_); }
+void ConvergingCycle::advance() {
+  current_ = next_;
+  next_ = step(next_);
+}
 
 ConvergingCycle::HighState ConvergingCycle::state_at(std::int64_t k, const HighPrecision& tau_start,
                                                      const HighPrecision& x_start,
@@ -292,7 +320,7 @@ ConvergingCycle::Horizon ConvergingCycle::horizon(double t_end) {
   using std::abs;
   const HighPrecision horizon_time(t_end);
   // Whether this slip's exact end (the next reversal) lies at or before t_end.
-  const Cursor next = step(current_);
+  const Cursor& next = next_;
   const Linear at_end = linear(next);
   bool stopped;
   if (fallback_ < 2 && at_end.t + at_end.t_error <= horizon_time)

@@ -82,14 +82,12 @@ class ConvergingCycle {
  private:
   ConvergingCycle() = default;
 
-  // Bounds of the transient at reversal k (docs/theory.md 3.10).
+  // Reversal k's transient and the bound on its rest (docs/theory.md 3.10).
   struct Cursor {
     std::int64_t k = 0;
-    double p = 1;       // kappa^k (double, relative error <= (2k + 2) u)
-    double lk = 1;      // >= L^k
-    double r = 0;       // >= |e_k - kappa^k e0|
-    double sum_r = 0;   // >= sum_{j<k} r_j
-    double sum_e2 = 0;  // >= sum_{j<k} (L^j e0)^2
+    double p = 1;   // kappa^k (double, relative error <= (2k + 2) u), 0 once below 2^-400
+    double lk = 1;  // >= L^k (held at 2^-400 from there)
+    double r = 0;   // >= |e_k - kappa^k e0| = (K e0^2 / (2 (1 - L) L)) L^k for k >= 1
   };
   Cursor step(const Cursor& c) const;
 
@@ -123,13 +121,16 @@ class ConvergingCycle {
   HighPrecision phi1_;  // d(slide) / de at the fixed point: pi (r - b sin u*)
   // Bounds on a ball of radius kMaxDeviation around u*: L >= |G'|, K the
   // Lipschitz constant of G' at u*, M that of the slide's derivative.
-  double l_ = 0, k_lip_ = 0, m_lip_ = 0, kappa_abs_ = 0;
+  HighPrecision l_, k_lip_, m_lip_;
+  double l_up_ = 0;
 
   // The replay's base and the terms of its sums, in double-double.
   std::int64_t n0_ = 0;
   long double x0_ = 0;
   HighPrecision u0_, e0_;
   double e0_abs_ = 0;
+  double rest_per_lk_ = 0;  // r_k <= this L^k (k >= 1)
+  double x_rest_ = 0;       // the positions' rest, for every k
   DoubleDouble half_period_;  // pi / w
   DoubleDouble fixed_time_;   // u* / w
   DoubleDouble x0_pair_;
@@ -139,9 +140,13 @@ class ConvergingCycle {
   double time_transient_ = 0;          // e0 / w
   double slide_transient_ = 0;         // phi1 e0 / ((1 + kappa) w)
   double acceleration_transient_ = 0;  // w b cos u* e0
-  double inverse_omega_up_ = 0, omega_b_up_ = 0, cos_star_up_ = 0, phi1_up_ = 0;
+  double inverse_omega_up_ = 0, omega_b_up_ = 0, cos_star_up_ = 0;
 
   Cursor current_;  // the reversal the current slip starts from
+  Cursor next_;     // and the one it ends at
+  // Once kappa^k is dropped: x at even and odd reversals, and |a|.
+  double steady_x_[2] = {0, 0}, steady_a_ = 0;
+  bool steady_x_known_[2] = {false, false}, steady_a_known_ = false;
   int fallback_ = 0;
   // The exact iteration's cursor (advanced only where no bound decides).
   std::int64_t exact_k_ = 0;
