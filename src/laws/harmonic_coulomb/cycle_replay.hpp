@@ -136,27 +136,14 @@ class CycleReplay {
       const SteadyCycle::End end = cycle_->end(shift_, phase_index_);
       out.kind = end.kind;
       if (!(end.t < t_end_)) {
-        // The horizon falls in this phase (or its end rounds to it): the
-        // event loop's rules there (event_loop.hpp), nothing counted.
+        // The horizon falls in this phase (or its end rounds to it).
         const SteadyCycle::Horizon at = cycle_->horizon(shift_, phase_index_, t_end_);
-        out.t_end = t_end_;
-        out.x_end = at.x;
-        out.v_end = at.v;
-        out.acceleration = at.acceleration;
-        out.stop = out.reversal = out.breakaway = false;
-        out.at_horizon = true;
-        out.rounded_in_50_digits = 0;  // the horizon's values come from 50 digits anyway
-        return;
+        return at_horizon(out, at.x, at.v, at.acceleration);
       }
-      out.rounded_in_50_digits = end.rounded_in_50_digits;
-      out.t_end = end.t;
-      out.x_end = end.x;
-      out.v_end = 0;
-      out.acceleration = end.acceleration;
+      ended(out, end.t, end.x, end.acceleration, end.rounded_in_50_digits);
       out.stop = phase.stop;
       out.reversal = phase.reversal;
       out.breakaway = phase.breakaway;
-      out.at_horizon = false;
       if (++phase_index_ == cycle_->size()) {
         phase_index_ = 0;
         ++cycle_index_;
@@ -227,24 +214,35 @@ class CycleReplay {
     out.kind = end.kind;
     if (!(end.t < t_end_)) {
       const ConvergingCycle::Horizon at = converging_->horizon(t_end_);
-      out.t_end = t_end_;
-      out.x_end = at.x;
-      out.v_end = at.v;
-      out.acceleration = at.acceleration;
-      out.stop = out.reversal = out.breakaway = false;
-      out.at_horizon = true;
-      out.rounded_in_50_digits = 0;
-      return;
+      return at_horizon(out, at.x, at.v, at.acceleration);
     }
-    out.rounded_in_50_digits = end.rounded_in_50_digits;
-    out.t_end = end.t;
-    out.x_end = end.x;
-    out.v_end = 0;
-    out.acceleration = end.acceleration;
+    ended(out, end.t, end.x, end.acceleration, end.rounded_in_50_digits);
     out.stop = out.reversal = true;
     out.breakaway = false;
-    out.at_horizon = false;
     converging_->advance();
+  }
+
+  // The phase with the horizon: the event loop's rules there
+  // (event_loop.hpp), nothing counted; its values come from 50 digits.
+  void at_horizon(ReplayedPhase<Real>& out, double x, double v, double acceleration) const {
+    out.t_end = t_end_;
+    out.x_end = x;
+    out.v_end = v;
+    out.acceleration = acceleration;
+    out.stop = out.reversal = out.breakaway = false;
+    out.at_horizon = true;
+    out.rounded_in_50_digits = 0;
+  }
+
+  // A phase that ends at rest before the horizon (what ends it: the caller).
+  static void ended(ReplayedPhase<Real>& out, double t, double x, double acceleration,
+                    int rounded_in_50_digits) {
+    out.t_end = t;
+    out.x_end = x;
+    out.v_end = 0;
+    out.acceleration = acceleration;
+    out.at_horizon = false;
+    out.rounded_in_50_digits = rounded_in_50_digits;
   }
 
   // Whether a replay may still start: not in the 50-digit engine itself,
