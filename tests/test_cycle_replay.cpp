@@ -348,8 +348,8 @@ TEST(CycleReplay, EverySlidingValueIsCorrectlyRounded) {
 }
 
 // Every value of three long continuous runs, replayed long past the point
-// where kappa^k is dropped (below 2^-400: some 1,000 reversals at lambda =
-// 0.3, 3,000 at 0.1) and x and |a| are decided once per parity, against
+// where kappa^k is dropped (below 2^-400: after some 390 reversals at
+// lambda = 0.3, 1,400 at 0.1) and x and |a| are decided once per parity, against
 // the 50-digit engine from the base reversal.
 TEST(CycleReplay, EveryValueOfLongSlidingRuns) {
   Counts counts;
