@@ -1,8 +1,9 @@
 // Events per second of the exact engine over 10^4 forcing periods, and the
 // cost of one event in std::cos calls (docs/benchmarks.md): as the engine
-// runs by default (with dead bands, the steady cycle replayed from 50 digits
-// after the first one: docs/theory.md 3.9) and event by event
-// (SolveOptions::replay_min_cycles = 0).
+// runs by default (the steady motion replayed: with dead bands the cycle from
+// 50 digits after the first one, docs/theory.md 3.9; sliding continuously the
+// fixed cycle and its transient from a reversal near it, 3.10) and event by
+// event (SolveOptions::replay_min_cycles = 0).
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -212,8 +212,8 @@ if general_dense:
 events = [b for b in rows if b["run_name"].startswith("BM_Events")]
 if events:
     print("Root-function evaluations (one sin_cos each) and sign tests per event in the same runs;")
-    print("the share of events replayed from the 50-digit steady cycle (`BM_Events`, the engine's")
-    print("default: theory.md 3.9), and of their times and positions the share the double-double")
+    print("the share of events replayed from the steady motion (`BM_Events`, the engine's")
+    print("default: theory.md 3.9, 3.10), and of their times and positions the share the double-double")
     print("bound could not round (then rounded from 50 digits):\n")
     print("| benchmark | root calls per event | sign tests per event | replayed | of their values in 50 digits |")
     print("|---|---:|---:|---:|---:|")
