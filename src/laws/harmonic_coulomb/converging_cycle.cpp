@@ -164,15 +164,12 @@ HighPrecision ConvergingCycle::acceleration_of(std::int64_t k, const HighPrecisi
   return even(n0_ + k) ? a : HighPrecision(-a);
 }
 
-HighPrecision ConvergingCycle::linear_phase(const Cursor& c) const {
-  return HighPrecision(n0_ + c.k) * pi_ + u_star_ + power(kappa_, c.k) * e0_;
-}
-
 ConvergingCycle::Linear ConvergingCycle::linear(const Cursor& c) const {
   using std::abs;
   Linear v;
   const HighPrecision transient = power(kappa_, c.k) * e0_;
-  v.t = (HighPrecision(n0_ + c.k) * pi_ + u_star_ + transient) / omega_;
+  v.tau = HighPrecision(n0_ + c.k) * pi_ + u_star_ + transient;
+  v.t = v.tau / omega_;
   v.t_error = HighPrecision(c.r) / omega_ + kHighSlack * abs(v.t);
   // sum_{j<k} (-kappa)^j = (1 - |kappa|^k) / (1 + kappa), kappa < 0.
   const HighPrecision fixed = c.k % 2 != 0 ? HighPrecision(2 * b_ * sin_star_) : HighPrecision(0);
@@ -339,7 +336,7 @@ ConvergingCycle::Horizon ConvergingCycle::horizon(double t_end) {
   // the start.
   const std::int64_t k = current_.k;
   const Linear at_start = linear(current_);
-  const HighPrecision tau_start = linear_phase(current_);
+  const HighPrecision& tau_start = at_start.tau;
   const HighState state = state_at(k, tau_start, at_start.x, horizon_time);
   const HighPrecision phase_error(current_.r);
   const HighPrecision length = abs(omega_ * horizon_time - tau_start) + phase_error;

@@ -76,8 +76,6 @@ class ConvergingCycle {
   // 50-digit linear transient, 2 also past that to the exact iteration.
   void force_fallback(int level) { fallback_ = level; }
 
-  std::int64_t base_turns() const { return n0_; }  // the base reversal is at n0 pi + u0
-  std::int64_t reversals() const { return current_.k; }  // the current one, from the base
 
  private:
   ConvergingCycle() = default;
@@ -94,10 +92,10 @@ class ConvergingCycle {
   // Reversal k's values from the linear transient, and the bounds on their
   // errors, in 50 digits.
   struct Linear {
+    HighPrecision tau;  // (n0 + k) pi + u* + kappa^k e0, off by at most r_k
     HighPrecision t, x, a, t_error, x_error, a_error;
   };
   Linear linear(const Cursor& c) const;
-  HighPrecision linear_phase(const Cursor& c) const;  // (n0 + k) pi + u* + kappa^k e0
   // Reversal k exactly: the map iterated from the base in 50 digits.
   struct Exact {
     HighPrecision u, x;  // phase and position at reversal k

@@ -198,7 +198,6 @@ class CycleReplay {
       if (!converging_->start(reversal_tau_, reversal_x_, reversal_direction_)) return false;
       base_tau_ = reversal_tau_;
       x0_ = reversal_x_;
-      n0_ = converging_->base_turns();
       replayed_ = sliding_ = true;
       return true;
     }
