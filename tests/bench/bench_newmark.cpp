@@ -19,6 +19,8 @@
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/newmark.hpp"
 #include "frictionref/slammer_rigid_block.hpp"
+#include "laws/linear_oscillator/oscillator.hpp"
+#include "laws/linear_oscillator/slip_law.hpp"
 
 namespace frictionref::bench {
 namespace {
@@ -85,16 +87,59 @@ BENCHMARK(BM_RecordSamples)->ArgName("one_way")->Arg(1)->Arg(0)->Unit(benchmark:
 // The same record driving a spring-damper block (natural frequency 2 Hz, 5 %
 // of critical damping, KY = 0.1, two-way) through the general laws (theory.md
 // 9.6), to 5 s after the record: per record sample.
-void BM_GeneralRecordSamples(benchmark::State& state) {
+Model general_record_model() {
   Model model =
       newmark_model(newmark_record(synthetic_record(1), Polarity::normal), 0.1, /*one_way=*/false);
   const double natural = 2 * M_PI * 2;  // rad/s
   model.stiffness = model.mass * natural * natural;
   model.damping = 2 * 0.05 * model.mass * natural;
-  const double t_end = model.ground_motion->t.back() + 5;
-  stream_per_sample(state, model, t_end);
+  return model;
+}
+void BM_GeneralRecordSamples(benchmark::State& state) {
+  const Model model = general_record_model();
+  stream_per_sample(state, model, model.ground_motion->t.back() + 5);
 }
 BENCHMARK(BM_GeneralRecordSamples)->Unit(benchmark::kMillisecond);
+
+// The floor of this design's record path (docs/benchmarks.md, "Floors,
+// measured"): for each slip of the same run, each record interval inside it
+// takes one law built from the state at its start and one evaluation with
+// error bounds at its end (the proof that the velocity keeps its sign
+// there), and nothing else: no search, no stick. Per record sample, as
+// BM_GeneralRecordSamples: a lower bound on that path.
+void BM_GeneralRecordFloor(benchmark::State& state) {
+  const Model model = general_record_model();
+  const double t_end = model.ground_motion->t.back() + 5;
+  std::vector<Phase> slips;
+  {
+    ExactEngine engine(model, t_end);
+    Phase phase;
+    while (engine.next(phase))
+      if (phase.kind != PhaseKind::stick) slips.push_back(phase);
+  }
+  using Work = long double;
+  using Law = detail::LinearSlipLaw<Work>;
+  const detail::Oscillator<Work> oscillator(model);
+  const Work omega = model.omega;
+  for (auto _ : state) {
+    for (const Phase& p : slips) {
+      const Work end = omega * Work(p.t_end);
+      Law law(oscillator, p.kind == PhaseKind::slip_forward ? 1 : -1, omega * Work(p.t_begin),
+              omega * Work(p.x_begin), Work(p.v_begin));
+      for (;;) {
+        const bool last = law.segment_end() >= end;
+        const Law::Point q = law.point(last ? end : law.segment_end());
+        benchmark::DoNotOptimize(q);
+        if (last) break;
+        law = law.continued_from(q);
+      }
+    }
+  }
+  const auto samples = static_cast<std::uint64_t>(state.iterations()) * kSamples;
+  state.SetItemsProcessed(static_cast<std::int64_t>(samples));
+  state.counters["cos_calls_per_sample"] = cos_calls_per(samples);
+}
+BENCHMARK(BM_GeneralRecordFloor)->Unit(benchmark::kMillisecond);
 
 void BM_NewmarkSamples(benchmark::State& state) {
   const bool one_way = state.range(0) != 0;
