@@ -6,13 +6,11 @@
 
 #include <cmath>
 #include <cstdint>
-#include <vector>
 
 #include "cos_baseline.hpp"
+#include "engine_slips.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "general_models.hpp"
-#include "laws/linear_oscillator/oscillator.hpp"
-#include "laws/linear_oscillator/slip_law.hpp"
 
 namespace frictionref::bench {
 namespace {
@@ -46,32 +44,18 @@ BENCHMARK(BM_GeneralEvents)->Apply(each_general_case)->Unit(benchmark::kMillisec
 // counts), a lower bound on an event of this design.
 void BM_GeneralEventFloor(benchmark::State& state) {
   const Model model = general_model(state.range(0));
-  const double t_end = kPeriods * 2 * M_PI;
-  std::vector<Phase> slips;
-  std::uint64_t phases = 0;
-  {
-    ExactEngine engine(model, t_end);
-    Phase phase;
-    while (engine.next(phase)) {
-      ++phases;
-      if (phase.kind != PhaseKind::stick) slips.push_back(phase);
-    }
-  }
-  using Work = long double;
-  const detail::Oscillator<Work> oscillator(model);
-  const Work omega = model.omega;
+  const EngineSlips run = engine_slips(model, kPeriods * 2 * M_PI);
+  const detail::Oscillator<GeneralWork> oscillator(model);
   std::uint64_t events = 0;
   for (auto _ : state) {
-    for (const Phase& p : slips) {
-      const Work begin = omega * Work(p.t_begin), end = omega * Work(p.t_end);
-      const int sign = p.kind == PhaseKind::slip_forward ? 1 : -1;
-      const detail::LinearSlipLaw<Work> law(oscillator, sign, begin, omega * Work(p.x_begin),
-                                            Work(p.v_begin));
+    for (const Phase& slip : run.slips) {
+      const auto law = general_law_at_start(oscillator, slip);
+      const GeneralWork begin = law.tau_begin(), end = oscillator.omega() * GeneralWork(slip.t_end);
       benchmark::DoNotOptimize(law.point(begin));
       benchmark::DoNotOptimize(law.point((begin + end) / 2));
       benchmark::DoNotOptimize(law.point(end));
     }
-    events += phases;
+    events += run.phases;
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(events));
   state.counters["cos_calls_per_event"] = cos_calls_per(events);

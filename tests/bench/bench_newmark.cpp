@@ -16,11 +16,10 @@
 #include <vector>
 
 #include "cos_baseline.hpp"
+#include "engine_slips.hpp"
 #include "frictionref/exact_engine.hpp"
 #include "frictionref/newmark.hpp"
 #include "frictionref/slammer_rigid_block.hpp"
-#include "laws/linear_oscillator/oscillator.hpp"
-#include "laws/linear_oscillator/slip_law.hpp"
 
 namespace frictionref::bench {
 namespace {
@@ -109,26 +108,15 @@ BENCHMARK(BM_GeneralRecordSamples)->Unit(benchmark::kMillisecond);
 // BM_GeneralRecordSamples: a lower bound on that path.
 void BM_GeneralRecordFloor(benchmark::State& state) {
   const Model model = general_record_model();
-  const double t_end = model.ground_motion->t.back() + 5;
-  std::vector<Phase> slips;
-  {
-    ExactEngine engine(model, t_end);
-    Phase phase;
-    while (engine.next(phase))
-      if (phase.kind != PhaseKind::stick) slips.push_back(phase);
-  }
-  using Work = long double;
-  using Law = detail::LinearSlipLaw<Work>;
-  const detail::Oscillator<Work> oscillator(model);
-  const Work omega = model.omega;
+  const EngineSlips run = engine_slips(model, model.ground_motion->t.back() + 5);
+  const detail::Oscillator<GeneralWork> oscillator(model);
   for (auto _ : state) {
-    for (const Phase& p : slips) {
-      const Work end = omega * Work(p.t_end);
-      Law law(oscillator, p.kind == PhaseKind::slip_forward ? 1 : -1, omega * Work(p.t_begin),
-              omega * Work(p.x_begin), Work(p.v_begin));
+    for (const Phase& slip : run.slips) {
+      const GeneralWork end = oscillator.omega() * GeneralWork(slip.t_end);
+      auto law = general_law_at_start(oscillator, slip);
       for (;;) {
         const bool last = law.segment_end() >= end;
-        const Law::Point q = law.point(last ? end : law.segment_end());
+        const auto q = law.point(last ? end : law.segment_end());
         benchmark::DoNotOptimize(q);
         if (last) break;
         law = law.continued_from(q);
