@@ -20,19 +20,30 @@ rounds=${ROUNDS:-2}
 patches=(seed_rows_without_trig seed_rows_trig_by_rotation oscillator_rows_without_transcendentals
          oscillator_rows_by_rotation)
 
-rm -rf "$work" && mkdir -p "$work/bin"
+# A worktree left by an earlier run goes first (its registration with it).
 git -C "$root" worktree remove -f "$work/tree" 2> /dev/null || true
+git -C "$root" worktree prune
+rm -rf "$work" && mkdir -p "$work/bin"
 git -C "$root" worktree add -f --detach "$work/tree" HEAD > /dev/null
 trap 'git -C "$root" worktree remove -f "$work/tree"' EXIT
 cd "$work/tree"
 cmake --preset release -DFRICTIONREF_BUILD_PYTHON=OFF > "$work/configure.log"
-build() { cmake --build build/release -j2 --target frictionref_benchmarks > "$work/build-$1.log" 2>&1; }
+# Builds the benchmarks of the tree as it is and keeps them as bin/NAME; a
+# failed build shows its log's end and stops the script.
+build() {
+  if ! cmake --build build/release -j2 --target frictionref_benchmarks > "$work/build-$1.log" 2>&1; then
+    tail -n 30 "$work/build-$1.log" >&2
+    echo "floors: the build of $1 failed (log: $work/build-$1.log)" >&2
+    exit 1
+  fi
+  cp build/release/tests/bench/frictionref_benchmarks "$work/bin/$1"
+}
 echo "building HEAD ($(git rev-parse --short HEAD))" >&2
-build head && cp build/release/tests/bench/frictionref_benchmarks "$work/bin/head"
+build head
 for p in "${patches[@]}"; do
   echo "building HEAD + $p.patch" >&2
   git apply "$here/$p.patch"
-  build "$p" && cp build/release/tests/bench/frictionref_benchmarks "$work/bin/$p"
+  build "$p"
   git checkout -q -- .
 done
 
