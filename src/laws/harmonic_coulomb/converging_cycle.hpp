@@ -76,7 +76,6 @@ class ConvergingCycle {
   // 50-digit linear transient, 2 also past that to the exact iteration.
   void force_fallback(int level) { fallback_ = level; }
 
-
  private:
   ConvergingCycle() = default;
 
